@@ -1,0 +1,53 @@
+#pragma once
+// Plain 2D geometry on doubles: the common vocabulary of DL, DC and DF.
+//
+// Conventions used everywhere in the project:
+//  * x is horizontal (east), y is vertical (up) in 2D sections; metres.
+//  * Polygons are stored as vertex lists without a repeated closing vertex,
+//    counter-clockwise (positive signed area).
+//  * Angles in input files are degrees; inside the code they are radians.
+#include <Eigen/Core>
+#include <vector>
+
+namespace dda {
+
+using Vec2 = Eigen::Vector2d;
+using Polygon2 = std::vector<Vec2>;
+
+constexpr double kPi = 3.14159265358979323846;
+inline double deg2rad(double deg) { return deg * kPi / 180.0; }
+inline double rad2deg(double rad) { return rad * 180.0 / kPi; }
+
+// 2D cross product (z component of a x b).
+inline double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+struct Box2 {
+  Vec2 lo{0, 0};
+  Vec2 hi{0, 0};
+  double width() const { return hi.x() - lo.x(); }
+  double height() const { return hi.y() - lo.y(); }
+};
+
+// Exact polygon integrals ("simplex integration": sum of signed triangles from
+// the origin), valid for any simple polygon, convex or not.
+struct PolygonMoments {
+  double area = 0;        // signed: positive for counter-clockwise
+  Vec2 centroid{0, 0};
+  double sxx = 0;         // integral of (x-x0)^2 dA about the centroid
+  double syy = 0;         // integral of (y-y0)^2 dA
+  double sxy = 0;         // integral of (x-x0)(y-y0) dA
+};
+
+PolygonMoments polygon_moments(const Polygon2& poly);
+double signed_area(const Polygon2& poly);
+Box2 bounding_box(const Polygon2& poly);
+// Even-odd rule; points exactly on the boundary may go either way.
+bool point_in_polygon(const Polygon2& poly, const Vec2& p);
+// Reverses the vertex order if the polygon is clockwise.
+void make_counter_clockwise(Polygon2& poly);
+// Width of the polygon in the direction perpendicular to `dir` and the
+// minimum such width over all edge directions (the minimum Feret diameter).
+double extent_along(const Polygon2& poly, const Vec2& dir);
+double min_feret_width(const Polygon2& poly);
+
+}  // namespace dda

@@ -1,0 +1,102 @@
+#include "dda/common/geometry.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace dda {
+
+double signed_area(const Polygon2& poly) {
+  double twice = 0;
+  const std::size_t n = poly.size();
+  for (std::size_t i = 0; i < n; ++i) twice += cross(poly[i], poly[(i + 1) % n]);
+  return 0.5 * twice;
+}
+
+PolygonMoments polygon_moments(const Polygon2& poly) {
+  // Integrate over triangles (o, p_i, p_{i+1}) with o = first vertex, which
+  // keeps the numbers small for polygons far from the origin. For a triangle
+  // with vertices 0, a, b (relative to o): A = cross(a,b)/2,
+  // int x dA = A (a_x + b_x)/3,
+  // int x^2 dA = A (a_x^2 + a_x b_x + b_x^2)/6, int xy dA likewise.
+  PolygonMoments m;
+  const std::size_t n = poly.size();
+  if (n < 3) return m;
+  const Vec2 o = poly[0];
+  double A = 0, Sx = 0, Sy = 0, Sxx = 0, Syy = 0, Sxy = 0;
+  for (std::size_t i = 1; i + 1 < n; ++i) {
+    const Vec2 a = poly[i] - o, b = poly[i + 1] - o;
+    const double t = 0.5 * cross(a, b);
+    A += t;
+    Sx += t * (a.x() + b.x()) / 3.0;
+    Sy += t * (a.y() + b.y()) / 3.0;
+    Sxx += t * (a.x() * a.x() + a.x() * b.x() + b.x() * b.x()) / 6.0;
+    Syy += t * (a.y() * a.y() + a.y() * b.y() + b.y() * b.y()) / 6.0;
+    Sxy += t * (2 * a.x() * a.y() + a.x() * b.y() + b.x() * a.y() + 2 * b.x() * b.y()) / 12.0;
+  }
+  m.area = A;
+  if (A == 0) return m;
+  const double cx = Sx / A, cy = Sy / A;
+  m.centroid = o + Vec2(cx, cy);
+  m.sxx = Sxx - A * cx * cx;
+  m.syy = Syy - A * cy * cy;
+  m.sxy = Sxy - A * cx * cy;
+  return m;
+}
+
+Box2 bounding_box(const Polygon2& poly) {
+  Box2 b;
+  if (poly.empty()) return b;
+  b.lo = b.hi = poly[0];
+  for (const Vec2& p : poly) {
+    b.lo = b.lo.cwiseMin(p);
+    b.hi = b.hi.cwiseMax(p);
+  }
+  return b;
+}
+
+bool point_in_polygon(const Polygon2& poly, const Vec2& p) {
+  bool inside = false;
+  const std::size_t n = poly.size();
+  for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
+    const Vec2& a = poly[i];
+    const Vec2& b = poly[j];
+    if ((a.y() > p.y()) != (b.y() > p.y())) {
+      const double x = a.x() + (p.y() - a.y()) * (b.x() - a.x()) / (b.y() - a.y());
+      if (p.x() < x) inside = !inside;
+    }
+  }
+  return inside;
+}
+
+void make_counter_clockwise(Polygon2& poly) {
+  if (signed_area(poly) < 0) std::reverse(poly.begin(), poly.end());
+}
+
+double extent_along(const Polygon2& poly, const Vec2& dir) {
+  const Vec2 u = dir.normalized();
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const Vec2& p : poly) {
+    const double s = p.dot(u);
+    lo = std::min(lo, s);
+    hi = std::max(hi, s);
+  }
+  return poly.empty() ? 0.0 : hi - lo;
+}
+
+double min_feret_width(const Polygon2& poly) {
+  // The minimum width of a polygon is attained perpendicular to an edge of
+  // its convex hull, and every hull edge joins two vertices, so testing the
+  // normal of every vertex pair is exact. O(n^3), affordable for blocks,
+  // which have tens of vertices at most.
+  const std::size_t n = poly.size();
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j) {
+      const Vec2 e = poly[j] - poly[i];
+      if (e.squaredNorm() == 0) continue;
+      best = std::min(best, extent_along(poly, Vec2(-e.y(), e.x())));
+    }
+  return n < 3 ? 0.0 : best;
+}
+
+}  // namespace dda
