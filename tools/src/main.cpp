@@ -1,9 +1,45 @@
 // The `dda` program: one command, one subcommand per pipeline stage.
+//
+// Exit status: 0 on success; 1 when the input is wrong (one sentence on
+// stderr naming the file, key or line); 2 for a command-line usage error;
+// 3 for an internal error (a bug: please report it).
+#include <CLI/CLI.hpp>
+#include <exception>
 #include <iostream>
 
+#include "commands.hpp"
+#include "dda/common/error.hpp"
 #include "dda/common/provenance.hpp"
 
 int main(int argc, char** argv) {
-  std::cout << "dda " << dda::version_string() << "\n";
+  CLI::App app{"dda: discontinuous deformation analysis of jointed rock.\n"
+               "Pipeline: dl (lines) -> dc (blocks) -> df (forward run, later); "
+               "`dda run` chains the stages a scenario asks for."};
+  app.set_version_flag("--version", std::string("dda ") + dda::version_string());
+  app.require_subcommand(1);
+  app.fallthrough();
+  dda::cli::GlobalOptions global;
+  app.add_flag("-q,--quiet", global.quiet, "Print nothing but errors");
+
+  dda::cli::add_dl_command(app, global);
+  dda::cli::add_dc_command(app, global);
+  dda::cli::add_run_command(app, global);
+  dda::cli::add_stats_command(app, global);
+  dda::cli::add_plot_command(app, global);
+  dda::cli::add_info_command(app, global);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    // --help and --version are "errors" with exit code 0 in CLI11.
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 2;
+  } catch (const dda::InputError& e) {
+    std::cerr << "dda: " << e.what() << "\n";
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "dda: internal error: " << e.what() << " (please report this)\n";
+    return 3;
+  }
   return 0;
 }

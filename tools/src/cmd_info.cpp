@@ -1,0 +1,45 @@
+// dda info FILE.h5: what a file is and what made it.
+#include <iostream>
+
+#include "commands.hpp"
+#include "dda/common/error.hpp"
+#include "dda/common/model_io.hpp"
+
+namespace dda::cli {
+
+namespace {
+void print_provenance(const Provenance& p) {
+  std::cout << "program version: " << p.program_version << "\n"
+            << "created (UTC):   " << p.created_utc << "\n"
+            << "scenario:        " << (p.scenario_path.empty() ? "(none)" : p.scenario_path) << "\n"
+            << "seed:            " << p.seed << "\n";
+}
+}  // namespace
+
+void add_info_command(CLI::App& app, const GlobalOptions&) {
+  auto input = std::make_shared<std::string>();
+  auto show_scenario = std::make_shared<bool>(false);
+  CLI::App* cmd = app.add_subcommand("info", "Describe a lines or blocks file: what it holds and what made it");
+  cmd->add_option("file", *input, "File written by dda")->required();
+  cmd->add_flag("--scenario", *show_scenario, "Print the scenario text stored in the file");
+  cmd->callback([input, show_scenario] {
+    const std::string format = h5_format_of(*input);
+    if (format == "dda-lines") {
+      const LineModel m = read_lines_h5(*input);
+      std::cout << *input << ": dda-lines, " << m.lines.size() << " lines in " << m.sets.size() << " sets, "
+                << m.excavations.size() << " excavations, " << m.points.size() << " points, " << m.layers.size()
+                << " layers\n";
+      print_provenance(m.provenance);
+      if (*show_scenario) std::cout << "\n" << m.provenance.scenario_text;
+    } else if (format == "dda-blocks") {
+      const BlockModel m = read_blocks_h5(*input);
+      std::cout << *input << ": dda-blocks, " << m.blocks.size() << " blocks, " << m.points.size() << " points\n";
+      print_provenance(m.provenance);
+      if (*show_scenario) std::cout << "\n" << m.provenance.scenario_text;
+    } else {
+      throw InputError(*input + ": is not a file written by dda (no `format` attribute).");
+    }
+  });
+}
+
+}  // namespace dda::cli

@@ -1,0 +1,42 @@
+// dda plot FILE.h5 [FILE.h5 ...] -o OUT.png
+#include "commands.hpp"
+#include "dda/common/error.hpp"
+#include "dda/common/model_io.hpp"
+#include "pipeline.hpp"
+#include "plot_runner.hpp"
+
+namespace dda::cli {
+
+void add_plot_command(CLI::App& app, const GlobalOptions& global) {
+  struct Options {
+    std::vector<std::string> inputs, labels;
+    std::string output, kind = "auto", title;
+  };
+  auto opt = std::make_shared<Options>();
+  CLI::App* cmd = app.add_subcommand(
+      "plot", "Draw lines or blocks (PNG/SVG), or block width and area histograms of one or more blocks files");
+  cmd->add_option("files", opt->inputs, "Lines or blocks files (HDF5)")->required();
+  cmd->add_option("-o,--output", opt->output, "Figure to write; .png or .svg")->required();
+  cmd->add_option("--kind", opt->kind, "auto (from the file), lines, blocks or histograms")
+      ->check(CLI::IsMember({"auto", "lines", "blocks", "histograms"}));
+  cmd->add_option("--labels", opt->labels, "Legend labels, one per file (histograms)");
+  cmd->add_option("--title", opt->title, "Figure title");
+  cmd->callback([opt, &global] {
+    for (const auto& f : opt->inputs)
+      if (h5_format_of(f).empty()) throw InputError(f + ": is not a lines or blocks file written by dda.");
+    if (!opt->labels.empty() && opt->labels.size() != opt->inputs.size())
+      throw InputError("--labels: give one label per file (" + std::to_string(opt->inputs.size()) + "), got " +
+                       std::to_string(opt->labels.size()) + ".");
+    std::vector<std::string> args = opt->inputs;
+    args.insert(args.end(), {"-o", opt->output, "--kind", opt->kind});
+    if (!opt->labels.empty()) {
+      args.push_back("--labels");
+      args.insert(args.end(), opt->labels.begin(), opt->labels.end());
+    }
+    if (!opt->title.empty()) args.insert(args.end(), {"--title", opt->title});
+    run_plot_script(args);
+    say(global.quiet, "figure written to " + opt->output + "\n");
+  });
+}
+
+}  // namespace dda::cli

@@ -1,0 +1,112 @@
+// dda run SCENARIO.yaml -o OUTDIR: every stage the scenario asks for.
+//
+// OUTDIR receives lines.h5, blocks.h5, dl_report.json, dc_report.json,
+// stats.json, vtk/{lines.vtu, blocks.vtu, model.pvd} and
+// figures/{lines, blocks, histograms}.png. The whole scenario is checked
+// before the first stage runs, so a typo in a late section fails at once.
+#include <filesystem>
+
+#include "commands.hpp"
+#include "dda/common/error.hpp"
+#include "dda/common/model_io.hpp"
+#include "dda/common/scenario.hpp"
+#include "dda/common/vtk.hpp"
+#include "dda/dc/stats.hpp"
+#include "dda/dl/generate.hpp"
+#include "pipeline.hpp"
+#include "plot_runner.hpp"
+
+namespace dda::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct OutputOptions {
+  bool vtk = true;
+  bool plots = true;
+  int histogram_bins = 20;
+};
+
+OutputOptions parse_output_options(const YamlNode& root) {
+  OutputOptions o;
+  if (auto out = root.optional_child("output")) {
+    out->allow({"vtk", "plots", "histogram_bins"});
+    o.vtk = out->flag("vtk", true);
+    o.plots = out->flag("plots", true);
+    o.histogram_bins = static_cast<int>(out->integer("histogram_bins", 20, Range::closed(1, 10000)));
+  }
+  return o;
+}
+
+void make_dir(const fs::path& dir) {
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) throw InputError(dir.string() + ": cannot create the output folder (" + ec.message() + ").");
+}
+
+}  // namespace
+
+void add_run_command(CLI::App& app, const GlobalOptions& global) {
+  struct Options {
+    std::string scenario, outdir;
+    bool no_plots = false, no_vtk = false;
+    SliverOverrides slivers;
+  };
+  auto opt = std::make_shared<Options>();
+  CLI::App* cmd = app.add_subcommand("run", "Run the whole pipeline of a scenario (DL -> DC) into a folder");
+  cmd->add_option("scenario", opt->scenario, "Scenario file (.yaml)")->required();
+  cmd->add_option("-o,--output", opt->outdir, "Output folder (created if missing)")->required();
+  cmd->add_flag("--no-plots", opt->no_plots, "Do not draw the figures");
+  cmd->add_flag("--no-vtk", opt->no_vtk, "Do not write ParaView files");
+  add_sliver_options(cmd, opt->slivers);
+  cmd->callback([opt, &global] {
+    if (!fs::exists(opt->scenario)) throw InputError(opt->scenario + ": no such file.");
+    const YamlNode root = load_scenario(opt->scenario);
+    OutputOptions out = parse_output_options(root);
+    dc::CutOptions cut_options = dc::parse_cut_options(root.optional_child("cutting"));
+    apply(opt->slivers, cut_options);
+    if (opt->no_plots) out.plots = false;
+    if (opt->no_vtk) out.vtk = false;
+
+    const fs::path dir(opt->outdir);
+    make_dir(dir);
+
+    dl::DlResult dl = dl::generate_from_scenario(root);
+    const std::string lines_h5 = (dir / "lines.h5").string();
+    write_lines_h5(lines_h5, dl.model);
+    write_json((dir / "dl_report.json").string(), dl.report);
+    say(global.quiet, dl::format_report(dl.report));
+    say(global.quiet, "DL: " + std::to_string(dl.model.lines.size()) + " lines written to " + lines_h5 + "\n");
+
+    const dc::CutResult cut = dc::cut_blocks(dl.model, cut_options);
+    const std::string blocks_h5 = (dir / "blocks.h5").string();
+    write_blocks_h5(blocks_h5, cut.model);
+    write_json((dir / "dc_report.json").string(), cut.report);
+    say(global.quiet, "DC: " + describe_cut(cut.model, blocks_h5));
+
+    write_json((dir / "stats.json").string(), dc::block_statistics(cut.model, out.histogram_bins));
+
+    if (out.vtk) {
+      make_dir(dir / "vtk");
+      write_lines_vtu((dir / "vtk" / "lines.vtu").string(), dl.model);
+      write_blocks_vtu((dir / "vtk" / "blocks.vtu").string(), cut.model);
+      write_pvd((dir / "vtk" / "model.pvd").string(),
+                {{"lines.vtu", 0.0, 0, "lines"}, {"blocks.vtu", 0.0, 1, "blocks"}});
+    }
+    if (out.plots) {
+      if (!plotting_available()) {
+        say(global.quiet, "figures skipped: /usr/bin/python3 with matplotlib and h5py is not installed\n");
+      } else {
+        const fs::path figs = dir / "figures";
+        make_dir(figs);
+        run_plot_script({lines_h5, "-o", (figs / "lines.png").string(), "--kind", "lines"});
+        run_plot_script({blocks_h5, "-o", (figs / "blocks.png").string(), "--kind", "blocks"});
+        run_plot_script({blocks_h5, "-o", (figs / "histograms.png").string(), "--kind", "histograms"});
+        say(global.quiet, "figures written to " + figs.string() + "\n");
+      }
+    }
+  });
+}
+
+}  // namespace dda::cli

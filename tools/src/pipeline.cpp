@@ -1,0 +1,75 @@
+#include "pipeline.hpp"
+
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+#include "dda/common/atomic_file.hpp"
+#include "dda/common/error.hpp"
+#include "dda/common/scenario.hpp"
+#include "dda/dl/generate.hpp"
+
+namespace dda::cli {
+
+namespace {
+bool has_extension(const std::string& path, const std::string& ext) {
+  std::string e = std::filesystem::path(path).extension().string();
+  for (char& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return e == ext;
+}
+}  // namespace
+
+DlOutcome run_dl(const std::string& input_path) {
+  if (!std::filesystem::exists(input_path)) throw InputError(input_path + ": no such file.");
+  if (has_extension(input_path, ".geo")) {
+    DlOutcome out{dl::import_geo(input_path), nlohmann::json::object()};
+    out.report["imported_from"] = input_path;
+    out.report["lines"] = out.lines.lines.size();
+    out.report["points"] = out.lines.points.size();
+    return out;
+  }
+  const YamlNode root = load_scenario(input_path);
+  dl::DlResult result = dl::generate_from_scenario(root);
+  return {std::move(result.model), std::move(result.report)};
+}
+
+dc::CutOptions cut_options_of(const LineModel& lines) {
+  const std::string& text = lines.provenance.scenario_text;
+  if (text.empty()) return dc::parse_cut_options(std::nullopt);
+  const std::string label = lines.provenance.scenario_path.empty() ? "scenario" : lines.provenance.scenario_path;
+  const YamlNode root = YamlNode::load_string(text, label);
+  return dc::parse_cut_options(root.optional_child("cutting"));
+}
+
+void apply(const SliverOverrides& o, dc::CutOptions& options) {
+  if (o.min_area) options.sliver.min_area = *o.min_area;
+  if (o.max_aspect) options.sliver.max_aspect = *o.max_aspect;
+  if (o.action) options.sliver.merge = (*o.action == "merge");
+}
+
+void add_sliver_options(CLI::App* cmd, SliverOverrides& o) {
+  cmd->add_option("--min-area", o.min_area, "Sliver filter: blocks below this area (m^2) are slivers")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--max-aspect", o.max_aspect, "Sliver filter: blocks above this aspect ratio are slivers")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--slivers", o.action, "What to do with slivers: merge them into a neighbour, or report them")
+      ->check(CLI::IsMember({"merge", "report"}));
+}
+
+std::string describe_cut(const BlockModel& blocks, const std::string& path) {
+  double area = 0;
+  for (const Block& b : blocks.blocks) area += b.area;
+  std::ostringstream s;
+  s << blocks.blocks.size() << " blocks (total area " << area << " m^2) written to " << path << "\n";
+  return s.str();
+}
+
+void say(bool quiet, const std::string& text) {
+  if (!quiet) std::cout << text << std::flush;
+}
+
+void write_json(const std::string& path, const nlohmann::json& doc) {
+  write_text_atomically(path, doc.dump(2) + "\n");
+}
+
+}  // namespace dda::cli

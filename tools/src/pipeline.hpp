@@ -1,0 +1,48 @@
+#pragma once
+// The pipeline stages as the commands use them: each stage reads what the
+// previous one wrote, reports what it did, and writes its file atomically.
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+
+#include "dda/common/block_model.hpp"
+#include "dda/common/line_model.hpp"
+#include "dda/dc/cut.hpp"
+
+namespace dda::cli {
+
+struct StageOutput {
+  std::string lines_h5;
+  std::string blocks_h5;
+};
+
+// DL: a scenario (.yaml) or a DDA-for-Windows geometry file (.geo).
+struct DlOutcome {
+  LineModel lines;
+  nlohmann::json report;
+};
+DlOutcome run_dl(const std::string& input_path);
+
+// The `cutting:` section of the scenario stored in a lines file, if any.
+dc::CutOptions cut_options_of(const LineModel& lines);
+
+// Command-line overrides of the sliver filter (unset values keep the file's).
+struct SliverOverrides {
+  std::optional<double> min_area;
+  std::optional<double> max_aspect;
+  std::optional<std::string> action;  // "merge" or "report"
+};
+void apply(const SliverOverrides& o, dc::CutOptions& options);
+void add_sliver_options(CLI::App* cmd, SliverOverrides& o);
+
+// One line describing a cut: block count and area, and where it went.
+std::string describe_cut(const BlockModel& blocks, const std::string& path);
+
+// Prints `text` unless quiet.
+void say(bool quiet, const std::string& text);
+
+// Writes a JSON document atomically, pretty-printed.
+void write_json(const std::string& path, const nlohmann::json& doc);
+
+}  // namespace dda::cli
