@@ -1,1 +1,517 @@
-// placeholder: being written
+// Lines and blocks files in HDF5 (C API). The layout is documented, dataset
+// by dataset, in docs/formats.md; keep the two in step.
+#include "dda/common/model_io.hpp"
+
+#include <cmath>
+#include <ctime>
+#include <algorithm>
+#include <limits>
+#include <memory>
+
+#include "dda/common/atomic_file.hpp"
+#include "dda/common/error.hpp"
+#include "h5_util.hpp"
+
+namespace dda {
+namespace {
+
+constexpr const char* kLinesFormat = "dda-lines";
+constexpr const char* kBlocksFormat = "dda-blocks";
+constexpr int kFormatVersion = 1;
+constexpr const char* kUnits = "SI: lengths m, areas m^2, second moments m^4, angles deg";
+constexpr const char* kPointKindCodes = "0 fixed, 1 load, 2 measurement, 3 hole";
+constexpr const char* kLineKindCodes = "0 joint, 1 bedding";
+constexpr const char* kSetCodes =
+    "joint set index (0, 1, ...; see /sets), -1 domain boundary, -2 excavation outline, "
+    "-3 artificial cut";
+
+std::string utc_now() {
+  const std::time_t t = std::time(nullptr);
+  std::tm tm{};
+  gmtime_r(&t, &tm);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
+  return buf;
+}
+
+// ------------------------------------------------------------------ writing
+
+void write_root_attributes(h5::Writer& w, const char* format, const Provenance& p) {
+  const hid_t root = w.file();
+  w.attr_text(root, "format", format);
+  w.attr_i32(root, "format_version", kFormatVersion);
+  w.attr_text(root, "units", kUnits);
+  w.attr_text(root, "program_version",
+              p.program_version.empty() ? std::string(version_string()) : p.program_version);
+  w.attr_text(root, "scenario_path", p.scenario_path);
+  w.attr_text(root, "scenario", p.scenario_text);
+  w.attr_u64(root, "seed", p.seed);
+  w.attr_text(root, "created_utc", p.created_utc.empty() ? utc_now() : p.created_utc);
+}
+
+std::vector<double> flatten(const Polygon2& poly) {
+  std::vector<double> xy;
+  xy.reserve(2 * poly.size());
+  for (const Vec2& v : poly) {
+    xy.push_back(v.x());
+    xy.push_back(v.y());
+  }
+  return xy;
+}
+
+void write_sets(h5::Writer& w, const std::vector<JointSetInfo>& sets) {
+  h5::Id g = w.group("sets");
+  std::vector<std::string> names, origins;
+  for (const JointSetInfo& s : sets) {
+    names.push_back(s.name);
+    origins.push_back(s.origin);
+  }
+  w.strings(g.get(), "name", names, "", "name of joint set i (UTF-8); index = set id");
+  w.strings(g.get(), "origin", origins, "",
+            "how set i was made: statistical, layered, user, csv, geo or bedding");
+}
+
+// `blocks` is empty for a lines file (no /points/block dataset then).
+void write_points(h5::Writer& w, const std::vector<ModelPoint>& points,
+                  const std::vector<int>* blocks) {
+  h5::Id g = w.group("points");
+  std::vector<std::string> names;
+  std::vector<std::int32_t> kinds;
+  std::vector<double> xy;
+  for (const ModelPoint& p : points) {
+    names.push_back(p.name);
+    kinds.push_back(static_cast<std::int32_t>(p.kind));
+    xy.push_back(p.p.x());
+    xy.push_back(p.p.y());
+  }
+  w.strings(g.get(), "name", names, "", "name of point i (UTF-8)");
+  w.i32(g.get(), "kind", kinds, "", std::string("kind of point i: ") + kPointKindCodes);
+  w.f64(g.get(), "xy", xy, {points.size(), 2}, "m", "coordinates x, y of point i");
+  if (blocks) {
+    std::vector<std::int32_t> b(blocks->begin(), blocks->end());
+    w.i32(g.get(), "block", b, "", "index of the block containing point i, -1 if none");
+  }
+}
+
+void write_layers(h5::Writer& w, const std::vector<Layer>& layers) {
+  h5::Id g = w.group("layers");
+  std::vector<double> bottom, top, target, realised;
+  for (const Layer& l : layers) {
+    bottom.push_back(l.bottom);
+    top.push_back(l.top);
+    target.push_back(l.target_fsi);
+    realised.push_back(l.realised_fsi);
+  }
+  const hsize_t n = layers.size();
+  const std::string coord =
+      " of bed i (elevation y for horizontal beds, else coordinate along the bed normal)";
+  w.f64(g.get(), "bottom", bottom, {n}, "m", "lower boundary" + coord);
+  w.f64(g.get(), "top", top, {n}, "m", "upper boundary" + coord);
+  w.f64(g.get(), "target_fsi", target, {n}, "1",
+        "fracture spacing index asked for (bed thickness / median joint spacing), 0 if none");
+  w.f64(g.get(), "realised_fsi", realised, {n}, "1",
+        "fracture spacing index of the joints generated in bed i");
+}
+
+// ------------------------------------------------------------------ reading
+
+void check_format(const h5::Reader& r, const std::string& expected) {
+  const auto format = r.attr_text(r.file(), "format", "the file");
+  if (!format)
+    r.fail("is an HDF5 file but not one written by dda (no format attribute), expected a " +
+           expected + " file");
+  if (*format != expected) r.fail("is a " + *format + " file, expected a " + expected + " file");
+  const auto version = r.attr_int(r.file(), "format_version", "the file");
+  if (!version) r.fail("has no format_version attribute");
+  if (*version < 1 || *version > kFormatVersion)
+    r.fail("has format_version " + std::to_string(*version) + ", this dda reads version " +
+           std::to_string(kFormatVersion) + " (a newer dda wrote it?)");
+}
+
+Provenance read_provenance(const h5::Reader& r) {
+  Provenance p;
+  const hid_t f = r.file();
+  p.program_version = r.attr_text(f, "program_version", "the file").value_or("");
+  p.scenario_path = r.attr_text(f, "scenario_path", "the file").value_or("");
+  p.scenario_text = r.attr_text(f, "scenario", "the file").value_or("");
+  p.seed = r.attr_u64(f, "seed", "the file").value_or(0);
+  p.created_utc = r.attr_text(f, "created_utc", "the file").value_or("");
+  return p;
+}
+
+std::string shape_text(const std::vector<hsize_t>& dims) {
+  std::string s = "(";
+  for (std::size_t i = 0; i < dims.size(); ++i) s += (i ? ", " : "") + std::to_string(dims[i]);
+  return s + (dims.size() == 1 ? ",)" : ")");
+}
+
+void check_finite(const h5::Reader& r, const std::string& ds, const std::vector<double>& v) {
+  for (double x : v)
+    if (!std::isfinite(x)) r.fail("dataset " + ds + " holds a value that is not a finite number");
+}
+
+// An n x cols matrix of doubles; returns the number of rows.
+std::vector<double> read_matrix(const h5::Reader& r, const std::string& ds, hsize_t cols,
+                                std::size_t& rows, const char* rows_name) {
+  h5::Array<double> a = r.f64(ds);
+  if (a.dims.size() != 2 || a.dims[1] != cols)
+    r.fail("dataset " + ds + " has shape " + shape_text(a.dims) + ", expected (" + rows_name +
+           ", " + std::to_string(cols) + ")");
+  rows = a.dims[0];
+  check_finite(r, ds, a.data);
+  return std::move(a.data);
+}
+
+// A 1-D dataset of exactly `n` values (one per `what`).
+std::vector<double> read_vector(const h5::Reader& r, const std::string& ds, std::size_t n,
+                                const std::string& what) {
+  h5::Array<double> a = r.f64(ds);
+  if (a.dims.size() != 1 || a.dims[0] != n)
+    r.fail("dataset " + ds + " has shape " + shape_text(a.dims) + ", expected (" +
+           std::to_string(n) + ",), one value per " + what);
+  return std::move(a.data);
+}
+
+std::vector<int> read_ints(const h5::Reader& r, const std::string& ds, std::size_t n,
+                           const std::string& what, long long lo, long long hi) {
+  h5::Array<std::int64_t> a = r.i64(ds);
+  if (a.dims.size() != 1 || a.dims[0] != n)
+    r.fail("dataset " + ds + " has shape " + shape_text(a.dims) + ", expected (" +
+           std::to_string(n) + ",), one value per " + what);
+  std::vector<int> out;
+  out.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::int64_t v = a.data[i];
+    if (v < lo || v > hi)
+      r.fail("dataset " + ds + " entry " + std::to_string(i) + " is " + std::to_string(v) +
+             ", must be between " + std::to_string(lo) + " and " + std::to_string(hi));
+    out.push_back(static_cast<int>(v));
+  }
+  return out;
+}
+
+std::vector<std::string> read_strings(const h5::Reader& r, const std::string& ds, std::size_t n,
+                                      const std::string& what) {
+  std::vector<std::string> s = r.strings(ds);
+  if (s.size() != n)
+    r.fail("dataset " + ds + " has " + std::to_string(s.size()) + " entries, expected " +
+           std::to_string(n) + ", one per " + what);
+  return s;
+}
+
+// Polygons stored as vertices (V x 2) + offsets (P + 1): polygon i is rows
+// offsets[i] .. offsets[i+1]-1. Every polygon has at least 3 vertices.
+std::vector<Polygon2> read_polygons(const h5::Reader& r, const std::string& group,
+                                    std::vector<double>* flat_out = nullptr) {
+  std::size_t nv = 0;
+  std::vector<double> xy = read_matrix(r, group + "/vertices", 2, nv, "V");
+  const std::string off_name = group + "/offsets";
+  h5::Array<std::int64_t> off = r.i64(off_name);
+  if (off.dims.size() != 1 || off.dims[0] < 1)
+    r.fail("dataset " + off_name + " has shape " + shape_text(off.dims) +
+           ", expected (P+1,) with at least one entry");
+  if (off.data.front() != 0)
+    r.fail("dataset " + off_name + " must start at 0, found " + std::to_string(off.data.front()));
+  if (off.data.back() != static_cast<std::int64_t>(nv))
+    r.fail("dataset " + off_name + " must end at the number of vertices " + std::to_string(nv) +
+           ", found " + std::to_string(off.data.back()));
+  std::vector<Polygon2> polys(off.data.size() - 1);
+  for (std::size_t i = 0; i + 1 < off.data.size(); ++i) {
+    const std::int64_t a = off.data[i], b = off.data[i + 1];
+    if (b - a < 3)
+      r.fail("dataset " + off_name + " gives polygon " + std::to_string(i) + " " +
+             std::to_string(b - a) + " vertices (offsets must rise by at least 3)");
+    Polygon2& p = polys[i];
+    p.reserve(static_cast<std::size_t>(b - a));
+    for (std::int64_t k = a; k < b; ++k)
+      p.emplace_back(xy[2 * static_cast<std::size_t>(k)], xy[2 * static_cast<std::size_t>(k) + 1]);
+  }
+  if (flat_out) *flat_out = std::move(xy);
+  return polys;
+}
+
+std::vector<JointSetInfo> read_sets(const h5::Reader& r) {
+  std::vector<JointSetInfo> sets;
+  if (!r.exists("/sets")) return sets;
+  std::vector<std::string> names = r.strings("/sets/name");
+  std::vector<std::string> origins = read_strings(r, "/sets/origin", names.size(), "set");
+  for (std::size_t i = 0; i < names.size(); ++i) sets.push_back({names[i], origins[i]});
+  return sets;
+}
+
+std::vector<ModelPoint> read_points(const h5::Reader& r) {
+  std::vector<ModelPoint> points;
+  if (!r.exists("/points")) return points;
+  std::vector<std::string> names = r.strings("/points/name");
+  const std::size_t n = names.size();
+  std::vector<int> kinds = read_ints(r, "/points/kind", n, "point", 0, 3);
+  std::size_t rows = 0;
+  std::vector<double> xy = read_matrix(r, "/points/xy", 2, rows, "P");
+  if (rows != n)
+    r.fail("dataset /points/xy has " + std::to_string(rows) + " rows, expected " +
+           std::to_string(n) + ", one per point");
+  for (std::size_t i = 0; i < n; ++i)
+    points.push_back({names[i], static_cast<PointKind>(kinds[i]), Vec2(xy[2 * i], xy[2 * i + 1])});
+  return points;
+}
+
+std::vector<Layer> read_layers(const h5::Reader& r) {
+  std::vector<Layer> layers;
+  if (!r.exists("/layers")) return layers;
+  h5::Array<double> bottom = r.f64("/layers/bottom");
+  if (bottom.dims.size() != 1)
+    r.fail("dataset /layers/bottom has shape " + shape_text(bottom.dims) + ", expected (N,)");
+  const std::size_t n = bottom.data.size();
+  std::vector<double> top = read_vector(r, "/layers/top", n, "layer");
+  std::vector<double> target = read_vector(r, "/layers/target_fsi", n, "layer");
+  std::vector<double> realised = read_vector(r, "/layers/realised_fsi", n, "layer");
+  check_finite(r, "/layers/bottom", bottom.data);
+  check_finite(r, "/layers/top", top);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (top[i] < bottom.data[i])
+      r.fail("layer " + std::to_string(i) + " has top " + std::to_string(top[i]) +
+             " below its bottom " + std::to_string(bottom.data[i]) + " (/layers)");
+    layers.push_back({bottom.data[i], top[i], target[i], realised[i]});
+  }
+  return layers;
+}
+
+double root_number(const h5::Reader& r, const char* name) {
+  const double v = r.attr_f64(r.file(), name, "the file").value_or(0.0);
+  if (!std::isfinite(v)) r.fail(std::string("attribute ") + name + " is not a finite number");
+  return v;
+}
+
+constexpr long long kIntMax = std::numeric_limits<int>::max();
+
+}  // namespace
+
+// ==================================================================== lines
+
+void write_lines_h5(const std::string& path, const LineModel& model) {
+  AtomicOutput out(path);
+  {
+    h5::Writer w(path, out.temp_path());
+    write_root_attributes(w, kLinesFormat, model.provenance);
+    w.attr_f64(w.file(), "bedding_dip_deg", model.bedding_dip_deg);
+    {
+      h5::Id g = w.group("domain");
+      w.f64(g.get(), "vertices", flatten(model.domain), {model.domain.size(), 2}, "m",
+            "domain boundary, counter-clockwise, not closed; zero rows if there is no domain");
+    }
+    {
+      h5::Id g = w.group("excavations");
+      std::vector<double> xy;
+      std::vector<std::int64_t> offsets{0};
+      for (const Polygon2& e : model.excavations) {
+        const std::vector<double> f = flatten(e);
+        xy.insert(xy.end(), f.begin(), f.end());
+        offsets.push_back(static_cast<std::int64_t>(xy.size() / 2));
+      }
+      w.f64(g.get(), "vertices", xy, {xy.size() / 2, 2}, "m",
+            "vertices of all excavation outlines, counter-clockwise, one after another");
+      w.i64(g.get(), "offsets", offsets, "",
+            "excavation i is vertices[offsets[i]:offsets[i+1]]; E+1 entries");
+    }
+    {
+      h5::Id g = w.group("lines");
+      std::vector<double> ends;
+      std::vector<std::int32_t> set, kind, layer;
+      ends.reserve(4 * model.lines.size());
+      for (const JointLine& l : model.lines) {
+        ends.insert(ends.end(), {l.a.x(), l.a.y(), l.b.x(), l.b.y()});
+        set.push_back(l.set);
+        kind.push_back(static_cast<std::int32_t>(l.kind));
+        layer.push_back(l.layer);
+      }
+      w.f64(g.get(), "endpoints", ends, {model.lines.size(), 4}, "m",
+            "line i from (x1, y1) to (x2, y2): columns x1 y1 x2 y2");
+      w.i32(g.get(), "set", set, "", std::string("joint set of line i: ") + kSetCodes);
+      w.i32(g.get(), "kind", kind, "", std::string("kind of line i: ") + kLineKindCodes);
+      w.i32(g.get(), "layer", layer, "", "bed line i was generated in (index into /layers), -1 if none");
+    }
+    write_sets(w, model.sets);
+    write_points(w, model.points, nullptr);
+    write_layers(w, model.layers);
+    w.close();
+  }
+  out.commit();
+}
+
+LineModel read_lines_h5(const std::string& path) {
+  h5::Reader r(path);
+  check_format(r, kLinesFormat);
+  LineModel m;
+  m.provenance = read_provenance(r);
+  m.bedding_dip_deg = root_number(r, "bedding_dip_deg");
+  m.sets = read_sets(r);
+  m.points = read_points(r);
+  m.layers = read_layers(r);
+
+  if (r.exists("/domain")) {
+    std::size_t n = 0;
+    std::vector<double> xy = read_matrix(r, "/domain/vertices", 2, n, "N");
+    if (n != 0 && n < 3)
+      r.fail("dataset /domain/vertices has " + std::to_string(n) +
+             " vertices, a domain needs at least 3 (or none)");
+    for (std::size_t i = 0; i < n; ++i) m.domain.emplace_back(xy[2 * i], xy[2 * i + 1]);
+  }
+  if (r.exists("/excavations")) m.excavations = read_polygons(r, "/excavations");
+
+  std::size_t n = 0;
+  std::vector<double> ends = read_matrix(r, "/lines/endpoints", 4, n, "L");
+  const long long nsets = static_cast<long long>(m.sets.size());
+  const long long nlayers = static_cast<long long>(m.layers.size());
+  std::vector<int> set = read_ints(r, "/lines/set", n, "line", kArtificialSet, nsets - 1);
+  std::vector<int> kind = read_ints(r, "/lines/kind", n, "line", 0, 1);
+  std::vector<int> layer = read_ints(r, "/lines/layer", n, "line", -1, nlayers - 1);
+  m.lines.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    JointLine& l = m.lines[i];
+    l.a = Vec2(ends[4 * i], ends[4 * i + 1]);
+    l.b = Vec2(ends[4 * i + 2], ends[4 * i + 3]);
+    l.set = set[i];
+    l.kind = static_cast<LineKind>(kind[i]);
+    l.layer = layer[i];
+  }
+  return m;
+}
+
+// =================================================================== blocks
+
+void write_blocks_h5(const std::string& path, const BlockModel& model) {
+  AtomicOutput out(path);
+  {
+    h5::Writer w(path, out.temp_path());
+    write_root_attributes(w, kBlocksFormat, model.provenance);
+    w.attr_f64(w.file(), "bedding_dip_deg", model.bedding_dip_deg);
+    w.attr_f64(w.file(), "domain_area", model.domain_area);
+    w.attr_f64(w.file(), "excavated_area", model.excavated_area);
+    {
+      h5::Id g = w.group("blocks");
+      const std::size_t nb = model.blocks.size();
+      std::size_t nv = 0;
+      for (const Block& b : model.blocks) {
+        if (b.edge_set.size() != b.vertices.size())
+          throw InternalError("write_blocks_h5: a block has " + std::to_string(b.vertices.size()) +
+                              " vertices but " + std::to_string(b.edge_set.size()) + " edge sets");
+        nv += b.vertices.size();
+      }
+      std::vector<double> xy, area, centroid, moments;
+      std::vector<std::int64_t> offsets{0};
+      std::vector<std::int32_t> edge_set, layer;
+      xy.reserve(2 * nv);
+      edge_set.reserve(nv);
+      for (const Block& b : model.blocks) {
+        for (const Vec2& v : b.vertices) xy.insert(xy.end(), {v.x(), v.y()});
+        edge_set.insert(edge_set.end(), b.edge_set.begin(), b.edge_set.end());
+        offsets.push_back(static_cast<std::int64_t>(xy.size() / 2));
+        area.push_back(b.area);
+        centroid.insert(centroid.end(), {b.centroid.x(), b.centroid.y()});
+        moments.insert(moments.end(), {b.sxx, b.syy, b.sxy});
+        layer.push_back(b.layer);
+      }
+      w.f64(g.get(), "vertices", xy, {nv, 2}, "m",
+            "vertices of all blocks, each block counter-clockwise, one block after another");
+      w.i64(g.get(), "offsets", offsets, "",
+            "block i is vertices[offsets[i]:offsets[i+1]]; B+1 entries");
+      w.i32(g.get(), "edge_set", edge_set, "",
+            std::string("per vertex k: set of the edge from vertex k to the next vertex of its "
+                        "block: ") + kSetCodes);
+      w.f64(g.get(), "area", area, {nb}, "m^2", "area of block i");
+      w.f64(g.get(), "centroid", centroid, {nb, 2}, "m", "centroid x, y of block i");
+      w.f64(g.get(), "second_moments", moments, {nb, 3}, "m^4",
+            "second moments of area of block i about its centroid: columns sxx syy sxy "
+            "(integrals of (x-x0)^2, (y-y0)^2, (x-x0)(y-y0) over the block)");
+      w.i32(g.get(), "layer", layer, "", "bed containing the centroid of block i, -1 if not layered");
+    }
+    write_sets(w, model.sets);
+    std::vector<ModelPoint> points;
+    std::vector<int> where;
+    for (const LocatedPoint& p : model.points) {
+      points.push_back(p.point);
+      where.push_back(p.block);
+    }
+    write_points(w, points, &where);
+    write_layers(w, model.layers);
+    w.close();
+  }
+  out.commit();
+}
+
+BlockModel read_blocks_h5(const std::string& path) {
+  h5::Reader r(path);
+  check_format(r, kBlocksFormat);
+  BlockModel m;
+  m.provenance = read_provenance(r);
+  m.bedding_dip_deg = root_number(r, "bedding_dip_deg");
+  m.domain_area = root_number(r, "domain_area");
+  m.excavated_area = root_number(r, "excavated_area");
+  m.sets = read_sets(r);
+  m.layers = read_layers(r);
+
+  std::vector<Polygon2> polys = read_polygons(r, "/blocks");
+  const std::size_t nb = polys.size();
+  std::size_t nv = 0;
+  for (const Polygon2& p : polys) nv += p.size();
+  const long long nsets = static_cast<long long>(m.sets.size());
+  std::vector<int> edge_set = read_ints(r, "/blocks/edge_set", nv, "vertex", kArtificialSet, nsets - 1);
+  std::vector<double> area = read_vector(r, "/blocks/area", nb, "block");
+  std::size_t rows = 0;
+  std::vector<double> centroid = read_matrix(r, "/blocks/centroid", 2, rows, "B");
+  if (rows != nb)
+    r.fail("dataset /blocks/centroid has " + std::to_string(rows) + " rows, expected " +
+           std::to_string(nb) + ", one per block");
+  std::vector<double> moments = read_matrix(r, "/blocks/second_moments", 3, rows, "B");
+  if (rows != nb)
+    r.fail("dataset /blocks/second_moments has " + std::to_string(rows) + " rows, expected " +
+           std::to_string(nb) + ", one per block");
+  std::vector<int> layer =
+      read_ints(r, "/blocks/layer", nb, "block", -1, static_cast<long long>(m.layers.size()) - 1);
+
+  m.blocks.resize(nb);
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < nb; ++i) {
+    Block& b = m.blocks[i];
+    b.vertices = std::move(polys[i]);
+    b.edge_set.assign(edge_set.begin() + static_cast<std::ptrdiff_t>(k),
+                      edge_set.begin() + static_cast<std::ptrdiff_t>(k + b.vertices.size()));
+    k += b.vertices.size();
+    b.area = area[i];
+    b.centroid = Vec2(centroid[2 * i], centroid[2 * i + 1]);
+    b.sxx = moments[3 * i];
+    b.syy = moments[3 * i + 1];
+    b.sxy = moments[3 * i + 2];
+    b.layer = layer[i];
+  }
+
+  std::vector<ModelPoint> points = read_points(r);
+  if (!points.empty() || r.exists("/points/block")) {
+    std::vector<int> where = read_ints(r, "/points/block", points.size(), "point", -1,
+                                       std::min<long long>(static_cast<long long>(nb) - 1, kIntMax));
+    for (std::size_t i = 0; i < points.size(); ++i) m.points.push_back({points[i], where[i]});
+  }
+  return m;
+}
+
+// =================================================================== format
+
+std::string h5_format_of(const std::string& path) {
+  h5::silence_errors();
+  // Missing, unreadable and damaged files are errors; a readable file that
+  // is not HDF5, or HDF5 without our `format` attribute, is "not ours".
+  std::unique_ptr<h5::Reader> r;
+  try {
+    r = std::make_unique<h5::Reader>(path);
+  } catch (const InputError& e) {
+    if (H5Fis_hdf5(path.c_str()) == 0) return "";
+    throw;
+  }
+  try {
+    return r->attr_text(r->file(), "format", "the file").value_or("");
+  } catch (const InputError&) {
+    return "";
+  }
+}
+
+}  // namespace dda

@@ -1,0 +1,141 @@
+#pragma once
+// Private helpers over the HDF5 C API for model_io.cpp: handles that close
+// themselves, and a writer and a reader that turn every HDF5 failure into one
+// InputError sentence naming the file (HDF5's own error stack printing is
+// switched off).
+#include <hdf5.h>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace dda::h5 {
+
+// Switches off HDF5's automatic error printing (idempotent).
+void silence_errors();
+
+// An owned hid_t, closed with the function it was made with.
+class Id {
+ public:
+  using Closer = herr_t (*)(hid_t);
+  Id() = default;
+  Id(hid_t id, Closer closer) : id_(id), closer_(closer) {}
+  ~Id() { reset(); }
+  Id(Id&& o) noexcept : id_(o.id_), closer_(o.closer_) { o.id_ = H5I_INVALID_HID; }
+  Id& operator=(Id&& o) noexcept {
+    if (this != &o) {
+      reset();
+      id_ = o.id_;
+      closer_ = o.closer_;
+      o.id_ = H5I_INVALID_HID;
+    }
+    return *this;
+  }
+  Id(const Id&) = delete;
+  Id& operator=(const Id&) = delete;
+
+  hid_t get() const { return id_; }
+  bool valid() const { return id_ >= 0; }
+  // Closes now; returns false if HDF5 reported a failure.
+  bool close() {
+    if (id_ < 0) return true;
+    const herr_t r = closer_(id_);
+    id_ = H5I_INVALID_HID;
+    return r >= 0;
+  }
+  void reset() { close(); }
+
+ private:
+  hid_t id_ = H5I_INVALID_HID;
+  Closer closer_ = nullptr;
+};
+
+// A UTF-8 variable-length string type (caller owns it).
+Id utf8_string_type();
+
+// Creates a new HDF5 file at `real_path`; every message names `shown_path`
+// (the final name the user asked for, not the temporary one).
+class Writer {
+ public:
+  Writer(std::string shown_path, const std::string& real_path);
+  hid_t file() const { return file_.get(); }
+  // Creates a group below the root (e.g. "lines") and returns it.
+  Id group(const std::string& name);
+
+  // Datasets: `dims` has one entry (1-D) or two (rows x columns); zero sizes
+  // give zero-size datasets. Each carries `units` and `description` attributes.
+  void f64(hid_t loc, const std::string& name, const std::vector<double>& data,
+           std::vector<hsize_t> dims, const std::string& units, const std::string& description);
+  void i32(hid_t loc, const std::string& name, const std::vector<std::int32_t>& data,
+           const std::string& units, const std::string& description);
+  void i64(hid_t loc, const std::string& name, const std::vector<std::int64_t>& data,
+           const std::string& units, const std::string& description);
+  void strings(hid_t loc, const std::string& name, const std::vector<std::string>& data,
+               const std::string& units, const std::string& description);
+
+  // Scalar attributes on any object (file, group or dataset).
+  void attr_text(hid_t obj, const std::string& name, const std::string& value);
+  void attr_i32(hid_t obj, const std::string& name, std::int32_t value);
+  void attr_u64(hid_t obj, const std::string& name, std::uint64_t value);
+  void attr_f64(hid_t obj, const std::string& name, double value);
+
+  // Flushes and closes the file; throws if HDF5 could not finish it.
+  void close();
+
+ private:
+  [[noreturn]] void fail(const std::string& what) const;
+  void write_numeric(hid_t loc, const std::string& name, hid_t file_type, hid_t mem_type,
+                     const void* data, const std::vector<hsize_t>& dims, const std::string& units,
+                     const std::string& description);
+  void attr_scalar(hid_t obj, const std::string& name, hid_t file_type, hid_t mem_type,
+                   const void* value);
+
+  std::string shown_;
+  Id file_;
+};
+
+template <class T>
+struct Array {
+  std::vector<T> data;
+  std::vector<hsize_t> dims;  // as stored
+};
+
+// Opens an existing file read-only after checking that it exists and is HDF5.
+class Reader {
+ public:
+  explicit Reader(std::string path);
+  const std::string& path() const { return path_; }
+  hid_t file() const { return file_.get(); }
+
+  // Whether a link of that name exists at the root ("lines") or below it
+  // ("/lines/set").
+  bool exists(const std::string& abs_path) const;
+
+  std::optional<std::string> attr_text(hid_t obj, const std::string& name,
+                                       const std::string& where) const;
+  std::optional<std::int64_t> attr_int(hid_t obj, const std::string& name,
+                                       const std::string& where) const;
+  std::optional<std::uint64_t> attr_u64(hid_t obj, const std::string& name,
+                                        const std::string& where) const;
+  std::optional<double> attr_f64(hid_t obj, const std::string& name,
+                                 const std::string& where) const;
+
+  // Numeric datasets by absolute path, converted to the requested type.
+  Array<double> f64(const std::string& abs_path) const;
+  Array<std::int64_t> i64(const std::string& abs_path) const;
+  std::vector<std::string> strings(const std::string& abs_path) const;
+
+  [[noreturn]] void fail(const std::string& what) const;
+
+ private:
+  Id open_dataset(const std::string& abs_path) const;
+  template <class T>
+  Array<T> numeric(const std::string& abs_path, hid_t mem_type) const;
+  Id open_scalar_attr(hid_t obj, const std::string& name, const std::string& where) const;
+
+  std::string path_;
+  Id file_;
+};
+
+}  // namespace dda::h5

@@ -1,0 +1,363 @@
+#!/usr/bin/python3
+"""Pictures of dda lines and blocks files (HDF5, see docs/formats.md).
+
+    dda_plot.py FILE.h5 [FILE2.h5 ...] -o OUT.png|OUT.svg|OUT.pdf
+                [--kind auto|lines|blocks|histograms] [--labels A B ...]
+                [--title T] [--bins N] [--fraction] [--no-names]
+
+--kind auto (default) draws each file as what it is: a lines file as its
+joint traces coloured by joint set with the domain and excavations outlined;
+a blocks file as filled blocks (coloured by bed, alternating shades, when the
+rock is layered) with thin black edges. Named points are marked in both:
+fixed ^, load v, measurement o, hole x. Several files are drawn side by side.
+
+--kind histograms draws the block width and block area distributions of one
+or more blocks files overlaid (counts per bin), e.g. a mechanically layered
+mesh against Shi-Goodman meshes. Block width is the extent of the block along
+the bedding direction (cos d, sin d), d = bedding_dip_deg, exactly as
+`dda stats` (dc/src/stats.cpp) computes it.
+
+Needs numpy, h5py and matplotlib (Debian: python3-h5py, python3-matplotlib);
+runs headless (Agg). Any problem is one line on stderr and exit status 2.
+"""
+
+import argparse
+import math
+import os
+import sys
+
+PROG = "dda_plot.py"
+POINT_STYLE = {  # kind code -> (marker, colour, label); codes as in docs/formats.md
+    0: ("^", "black", "fixed point"),
+    1: ("v", "#d62728", "load point"),
+    2: ("o", "#1f77b4", "measurement point"),
+    3: ("x", "#555555", "hole point"),
+}
+
+
+def fail(message):
+    """One sentence on stderr, exit status 2."""
+    message = message.rstrip()
+    if not message.endswith("."):
+        message += "."
+    print(f"{PROG}: {message}", file=sys.stderr)
+    sys.exit(2)
+
+
+try:
+    import numpy as np
+    import h5py
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from matplotlib.collections import LineCollection, PolyCollection
+    from matplotlib.lines import Line2D
+    from matplotlib.patches import Polygon as PolygonPatch
+except ImportError as exc:  # pragma: no cover - depends on the machine
+    fail(f"needs numpy, h5py and matplotlib ({exc}); run it with /usr/bin/python3")
+
+
+# ----------------------------------------------------------------- reading
+
+
+def text(value):
+    if isinstance(value, bytes):
+        return value.decode("utf-8", errors="replace")
+    if isinstance(value, np.ndarray) and value.shape == ():
+        return text(value[()])
+    return str(value)
+
+
+class Model:
+    """What the plots need from a lines or blocks file, as numpy arrays."""
+
+    def __init__(self, path):
+        self.path = path
+        if not os.path.exists(path):
+            fail(f"{path}: file not found")
+        if os.path.isdir(path):
+            fail(f"{path}: is a folder, not a file")
+        try:
+            is_hdf5 = h5py.is_hdf5(path)
+        except OSError as exc:
+            fail(f"{path}: cannot read the file ({exc.strerror or exc})")
+        if not is_hdf5:
+            fail(f"{path}: is not an HDF5 file")
+        try:
+            with h5py.File(path, "r") as f:
+                self.format = text(f.attrs.get("format", ""))
+                if self.format not in ("dda-lines", "dda-blocks"):
+                    fail(f"{path}: is not a dda lines or blocks file (no dda format attribute)")
+                self._read(f)
+        except (OSError, KeyError, ValueError, TypeError) as exc:
+            fail(f"{path}: cannot read it as a {getattr(self, 'format', 'dda')} file ({exc})")
+
+    def _read(self, f):
+        def arr(name, shape_tail=(), dtype=float):
+            if name in f:
+                return np.asarray(f[name][()], dtype=dtype)
+            return np.zeros((0,) + shape_tail, dtype=dtype)
+
+        def strings(name):
+            return [text(s) for s in f[name][()]] if name in f else []
+
+        self.dip = float(f.attrs.get("bedding_dip_deg", 0.0))
+        self.set_names = strings("sets/name")
+        self.point_names = strings("points/name")
+        self.point_kind = arr("points/kind", dtype=int)
+        self.point_xy = arr("points/xy", (2,)).reshape(-1, 2)
+        self.layer_bottom = arr("layers/bottom")
+        self.layer_top = arr("layers/top")
+        if self.format == "dda-lines":
+            self.domain = arr("domain/vertices", (2,)).reshape(-1, 2)
+            ev = arr("excavations/vertices", (2,)).reshape(-1, 2)
+            eo = arr("excavations/offsets", dtype=np.int64) if "excavations/offsets" in f else np.zeros(1, np.int64)
+            self.excavations = [ev[eo[i]:eo[i + 1]] for i in range(len(eo) - 1)]
+            self.endpoints = arr("lines/endpoints", (4,)).reshape(-1, 4)
+            self.line_set = arr("lines/set", dtype=int)
+            self.line_kind = arr("lines/kind", dtype=int)
+        else:
+            self.vertices = arr("blocks/vertices", (2,)).reshape(-1, 2)
+            self.offsets = arr("blocks/offsets", dtype=np.int64)
+            if len(self.offsets) == 0:
+                self.offsets = np.zeros(1, np.int64)
+            if self.offsets[0] != 0 or self.offsets[-1] != len(self.vertices) or np.any(np.diff(self.offsets) < 3):
+                raise ValueError("/blocks/offsets does not match /blocks/vertices")
+            self.area = arr("blocks/area")
+            self.block_layer = arr("blocks/layer", dtype=int)
+            if len(self.area) != self.num_blocks or len(self.block_layer) != self.num_blocks:
+                raise ValueError("/blocks/area or /blocks/layer has the wrong length")
+
+    @property
+    def num_blocks(self):
+        return len(self.offsets) - 1
+
+    def polygons(self):
+        return np.split(self.vertices, self.offsets[1:-1]) if self.num_blocks else []
+
+    def widths(self):
+        """Extent of each block along the bedding direction (cos d, sin d)."""
+        if self.num_blocks == 0:
+            return np.zeros(0)
+        d = math.radians(self.dip)
+        s = self.vertices @ np.array([math.cos(d), math.sin(d)])
+        starts = self.offsets[:-1]
+        return np.maximum.reduceat(s, starts) - np.minimum.reduceat(s, starts)
+
+
+# ----------------------------------------------------------------- drawing
+
+
+def set_colours(count):
+    cmap = plt.get_cmap("tab10" if count <= 10 else "tab20")
+    return [cmap(i % cmap.N) for i in range(max(count, 1))]
+
+
+def draw_points(ax, m, names=True):
+    handles = []
+    for kind, (marker, colour, label) in POINT_STYLE.items():
+        sel = np.flatnonzero(m.point_kind == kind)
+        if len(sel) == 0:
+            continue
+        style = {} if marker == "x" else {"edgecolors": "white"}  # x is an unfilled marker
+        ax.scatter(m.point_xy[sel, 0], m.point_xy[sel, 1], marker=marker, c=colour, s=36,
+                   linewidths=1.2, zorder=5, **style)
+        handles.append(Line2D([], [], ls="", marker=marker, color=colour, label=label))
+        if names:
+            for i in sel:
+                ax.annotate(m.point_names[i] if i < len(m.point_names) else "",
+                            m.point_xy[i], xytext=(4, 4), textcoords="offset points",
+                            fontsize=7, zorder=6)
+    return handles
+
+
+def draw_lines(ax, m, names=True):
+    handles = []
+    colours = set_colours(len(m.set_names))
+    segs = m.endpoints.reshape(-1, 2, 2)
+    if len(segs):
+        cols = [colours[s] if 0 <= s < len(colours) else (0, 0, 0, 1) for s in m.line_set]
+        widths = np.where(m.line_kind == 1, 1.3, 0.7)
+        ax.add_collection(LineCollection(segs, colors=cols, linewidths=widths, zorder=2))
+    used = sorted(set(int(s) for s in m.line_set))
+    for s in used:
+        name = m.set_names[s] if 0 <= s < len(m.set_names) else f"set {s}"
+        colour = colours[s] if 0 <= s < len(colours) else "black"
+        handles.append(Line2D([], [], color=colour, lw=1.5, label=name))
+    if len(m.domain) >= 3:
+        ax.add_patch(PolygonPatch(m.domain, closed=True, fill=False, ec="black", lw=1.2, zorder=3))
+    for e in m.excavations:
+        ax.add_patch(PolygonPatch(e, closed=True, fc="white", ec="black", lw=1.0, zorder=3))
+    handles += draw_points(ax, m, names)
+    bounds = [a for a in (m.domain, segs.reshape(-1, 2), m.point_xy) if len(a)]
+    return handles, bounds
+
+
+def block_colours(m):
+    n = m.num_blocks
+    rng = np.random.default_rng(12345)  # same picture every time
+    if len(m.layer_bottom) and np.any(m.block_layer >= 0):
+        # Beds in alternating shades; a little lightness jitter per block.
+        base = np.array([[0.85, 0.74, 0.56], [0.62, 0.72, 0.80]])
+        rgb = np.where((m.block_layer % 2 == 0)[:, None], base[0], base[1])
+        rgb = np.clip(rgb * rng.uniform(0.88, 1.08, size=(n, 1)), 0, 1)
+        rgb[m.block_layer < 0] = (0.85, 0.85, 0.85)
+        return rgb
+    # Not layered: a qualitative palette, picked at random so that
+    # neighbouring blocks are unlikely to share a colour.
+    palette = np.array(plt.get_cmap("tab20").colors)
+    palette = 0.55 * palette + 0.45  # lighter, so edges and points stay visible
+    return palette[rng.integers(0, len(palette), size=n)]
+
+
+def draw_blocks(ax, m, names=True):
+    polys = m.polygons()
+    if polys:
+        lw = 0.4 if len(polys) < 5000 else (0.2 if len(polys) < 50000 else 0.1)
+        ax.add_collection(PolyCollection(polys, facecolors=block_colours(m), edgecolors="black",
+                                         linewidths=lw, zorder=2))
+    handles = draw_points(ax, m, names)
+    bounds = [a for a in (m.vertices, m.point_xy) if len(a)]
+    return handles, bounds
+
+
+def finish_map(ax, bounds, title, handles):
+    ax.set_aspect("equal")
+    if bounds:
+        allp = np.vstack(bounds)
+        lo, hi = allp.min(axis=0), allp.max(axis=0)
+        pad = 0.03 * max(hi[0] - lo[0], hi[1] - lo[1], 1e-9)
+        ax.set_xlim(lo[0] - pad, hi[0] + pad)
+        ax.set_ylim(lo[1] - pad, hi[1] + pad)
+    ax.set_xlabel("x (m)")
+    ax.set_ylabel("y (m)")
+    ax.set_title(title, fontsize=10)
+    if handles:
+        ax.legend(handles=handles, fontsize=7, loc="upper right", framealpha=0.85)
+
+
+def plot_maps(models, labels, kind, names):
+    n = len(models)
+    cols = min(n, 3)
+    rows = (n + cols - 1) // cols
+    fig, axes = plt.subplots(rows, cols, figsize=(6.5 * cols, 5.0 * rows), squeeze=False)
+    for ax, m, label in zip(axes.flat, models, labels):
+        want = {"lines": "dda-lines", "blocks": "dda-blocks"}.get(kind, m.format)
+        if m.format != want:
+            fail(f"{m.path}: is a {m.format} file, --kind {kind} needs a {want} file")
+        if m.format == "dda-lines":
+            handles, bounds = draw_lines(ax, m, names)
+            sub = f"{len(m.endpoints)} lines"
+        else:
+            handles, bounds = draw_blocks(ax, m, names)
+            sub = f"{m.num_blocks} blocks"
+        finish_map(ax, bounds, f"{label} ({sub})", handles)
+    for ax in list(axes.flat)[n:]:
+        ax.set_visible(False)
+    return fig
+
+
+def plot_histograms(models, labels, bins, fraction=False):
+    for m in models:
+        if m.format != "dda-blocks":
+            fail(f"{m.path}: is a {m.format} file, --kind histograms needs dda-blocks files")
+    widths = [m.widths() for m in models]
+    areas = [np.asarray(m.area, dtype=float) for m in models]
+    fig, (axw, axa) = plt.subplots(1, 2, figsize=(11, 4.2))
+
+    def edges(values, log):
+        allv = np.concatenate(values) if values else np.zeros(0)
+        allv = allv[np.isfinite(allv)]
+        if log:
+            allv = allv[allv > 0]
+        if len(allv) == 0:
+            return None
+        lo, hi = allv.min(), allv.max()
+        if not hi > lo:
+            lo, hi = (lo / 2, hi * 2) if log else (lo - 0.5, hi + 0.5)
+        return np.geomspace(lo, hi, bins + 1) if log else np.linspace(lo, hi, bins + 1)
+
+    nonzero = np.concatenate(areas) if areas else np.zeros(0)
+    nonzero = nonzero[nonzero > 0]
+    log_area = len(nonzero) > 0 and nonzero.max() / nonzero.min() > 100
+    for ax, values, log, xlabel in ((axw, widths, False, "block width along the bedding (m)"),
+                                    (axa, areas, log_area, "block area (m²)")):
+        e = edges(values, log)
+        for v, label in zip(values, labels):
+            if e is not None and len(v):
+                weights = np.full(len(v), 1.0 / len(v)) if fraction else None
+                ax.hist(v, bins=e, weights=weights, histtype="step", linewidth=1.6,
+                        label=f"{label} (n={len(v)})")
+        if log:
+            ax.set_xscale("log")
+        ax.set_xlabel(xlabel)
+        ax.set_ylabel("fraction of blocks" if fraction else "number of blocks")
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=8)
+    axw.set_title("Block width", fontsize=10)
+    axa.set_title("Block area" + (" (logarithmic bins)" if log_area else ""), fontsize=10)
+    return fig
+
+
+# -------------------------------------------------------------------- main
+
+
+def save_atomically(fig, out):
+    folder, base = os.path.split(os.path.abspath(out))
+    ext = os.path.splitext(base)[1].lower()
+    tmp = os.path.join(folder, f".{base}.tmp-{os.getpid()}{ext}")
+    try:
+        fig.savefig(tmp, format=ext[1:], dpi=150, bbox_inches="tight")
+        os.replace(tmp, out)
+    except OSError as exc:
+        fail(f"{out}: cannot write: {exc.strerror or exc}")
+    finally:
+        if os.path.exists(tmp):
+            os.remove(tmp)
+
+
+class Parser(argparse.ArgumentParser):
+    def error(self, message):  # one line, exit 2
+        fail(f"{message} (see {PROG} --help)")
+
+
+def main(argv=None):
+    p = Parser(prog=PROG, description="Draw dda lines/blocks files or block-size histograms.",
+               formatter_class=argparse.RawDescriptionHelpFormatter, epilog=__doc__)
+    p.add_argument("files", nargs="+", metavar="FILE.h5", help="dda-lines or dda-blocks files")
+    p.add_argument("-o", "--output", required=True, metavar="OUT", help="OUT.png, OUT.svg or OUT.pdf")
+    p.add_argument("--kind", choices=["auto", "lines", "blocks", "histograms"], default="auto")
+    p.add_argument("--labels", nargs="+", metavar="LABEL", help="one label per file")
+    p.add_argument("--title", help="figure title")
+    p.add_argument("--bins", type=int, default=30, help="histogram bins (default 30)")
+    p.add_argument("--fraction", action="store_true",
+                   help="histograms: fraction of each file's blocks instead of counts")
+    p.add_argument("--no-names", action="store_true", help="do not write point names")
+    a = p.parse_args(argv)
+
+    ext = os.path.splitext(a.output)[1].lower()
+    if ext not in (".png", ".svg", ".pdf"):
+        fail(f"{a.output}: the output must end in .png, .svg or .pdf")
+    folder = os.path.dirname(os.path.abspath(a.output))
+    if not os.path.isdir(folder):
+        fail(f"{a.output}: cannot write: the folder {folder} does not exist")
+    if a.labels is not None and len(a.labels) != len(a.files):
+        fail(f"--labels gives {len(a.labels)} labels for {len(a.files)} files")
+    if a.bins < 1:
+        fail(f"--bins must be at least 1, got {a.bins}")
+    labels = a.labels or [os.path.basename(f) for f in a.files]
+
+    models = [Model(f) for f in a.files]
+    if a.kind == "histograms":
+        fig = plot_histograms(models, labels, a.bins, a.fraction)
+    else:
+        fig = plot_maps(models, labels, a.kind, not a.no_names)
+    if a.title:
+        fig.suptitle(a.title)
+    save_atomically(fig, a.output)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
