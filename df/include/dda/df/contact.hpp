@@ -1,0 +1,83 @@
+#pragma once
+// One vertex-edge contact: its persistent state, its linearised geometry for
+// the current step, its springs and its open / sliding / locked decision.
+//
+// Normal: dn(d) = dn0 + en.d_i + gn.d_j (see contact_detection.hpp for the
+// sign: penetration negative). A closed contact adds the penalty energy
+// pn/2 dn^2, i.e. K += pn [en; gn][en; gn]^T, F -= pn dn0 [en; gn].
+// Shear (locked only): ds(d) = ds0 + es.d_i + gs.d_j, the tangential offset
+// of P1 from a reference point P0 fixed on the edge since the contact locked;
+// energy ps/2 ds^2.
+// Sliding: no shear spring; the friction force F_f (from the FrictionLaw,
+// with the normal force of the previous iterate) acts on P1 against the slip
+// direction, and the opposite force on the edge at the projection of P1.
+#include "dda/df/block_kinematics.hpp"
+#include "dda/df/friction.hpp"
+#include "dda/df/types.hpp"
+
+namespace dda::df {
+
+class BlockSystem;
+
+enum class ContactState { Open, Sliding, Locked };
+const char* to_string(ContactState s);
+
+// Geometry of a contact in the configuration at the start of the step.
+struct ContactGeometry {
+  double length = 0;             // edge length l, m
+  Vec2 tangent{1, 0};            // unit A -> B
+  double dn0 = 0;                // signed normal distance, m
+  Vector6d en, gn;               // d(dn)/d(d_i), d(dn)/d(d_j)
+  double ratio0 = 0;             // projection of P1 on the edge, A = 0, B = 1
+  double ds0 = 0;                // tangential offset of P1 from the reference point, m
+  Vector6d es, gs;               // d(ds)/d(d_i), d(ds)/d(d_j)
+  Vector6d gc;                   // -T_j(Pc)^T t: edge motion at the projection Pc
+};
+
+struct Contact {
+  int vblock = -1, vertex = -1, eblock = -1, edge = -1;
+  int joint = 0;                 // index into Model::joints
+  ContactState state = ContactState::Open;
+  double ref_ratio = 0;          // reference point P0 on the edge (used while locked)
+  int slip_sign = 0;             // +1/-1: P1 slides along +t/-t relative to the edge
+  double normal_force = 0;       // N, compression positive, last solve
+  double shear_force = 0;        // N on P1 along t, last solve (locked) or friction (sliding)
+  double slip_velocity = 0;      // m/s, |relative tangential motion| / dt, last solve
+  bool friction_settled = true;  // sliding: the friction assembled matches the new normal force
+  double length = 0;             // m, joint length this contact stands for (cohesion, tension)
+  bool bonded = false;           // intact cohesive/tensile bond; breaks once, for ever
+  bool broke = false;            // set when the bond broke in the current iterate
+  FrictionState friction;
+  ContactGeometry geo;
+};
+
+// Linearised geometry of `c` from the current vertices of both blocks; uses
+// c.ref_ratio for the shear reference.
+ContactGeometry contact_geometry(const Polygon2& vi, const Vec2& ci, const Polygon2& vj,
+                                 const Vec2& cj, int vertex, int edge, double ref_ratio);
+
+// Length of joint a vertex contact stands for: half of each edge at the vertex
+// that lies within 10 degrees of the contact edge (two vertices of a face lying
+// on an edge share the face between them); 0 for a corner against an edge.
+double tributary_length(const Polygon2& vi, int vertex, const Vec2& edge_tangent);
+
+// Per-contact penalties and friction strength, as assembled.
+struct ContactLaw {
+  double pn = 0, ps = 0;
+  double tensile_strength = 0;   // Pa
+  const FrictionLaw* friction = nullptr;
+};
+
+// Springs and friction forces of the contact in its current state.
+void add_contact_terms(const Contact& c, const ContactLaw& law, double dt, BlockSystem& sys);
+
+// State after a solve with increments di, dj (the state the next iterate
+// assumes). Updates the forces of the contact and the bond; returns the new
+// state. For a contact that stays sliding, friction_settled says whether the
+// friction force assembled (from the previous normal force) agrees with the
+// one the new normal force gives, within 0.1 %: the open-close iteration goes
+// on until it does, so friction is in effect implicit in the normal force.
+ContactState update_contact(Contact& c, const ContactLaw& law, double dt, const Vector6d& di,
+                            const Vector6d& dj);
+
+}  // namespace dda::df

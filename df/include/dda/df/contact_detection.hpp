@@ -1,0 +1,47 @@
+#pragma once
+// Narrow phase: which vertex of which block touches which edge of which block.
+//
+// A contact is always a vertex P1 of block `vblock` against an edge of block
+// `eblock` (edge k runs from vertex k to vertex k+1, counter-clockwise). An
+// edge-to-edge contact appears as two such contacts, one per end.
+//
+// Signed normal distance (convention used in all of DF):
+//   dn = cross(P1 - A, B - A) / l,   A -> B the edge in CCW order, l = |AB|,
+// which equals Delta / l with Delta = det|1 x1 y1; 1 xB yB; 1 xA yA| (the
+// edge taken clockwise). dn > 0: P1 is outside block `eblock`; dn < 0:
+// penetration.
+//
+// Vertex-vertex (angle-angle) contacts: when P1 is within the search distance
+// of a vertex Q of the other block, only one contact is made, against the
+// entrance edge: the edge the vertex would cross first. Among the four edges
+// at P1 and Q, a candidate is admissible if the vertex is the other block's
+// extreme point toward that edge (both edges at the vertex leave the edge's
+// line on the outside, within a few degrees); the entrance edge is the
+// admissible candidate with the largest dn (the separating-axis choice).
+#include <functional>
+#include <utility>
+#include <vector>
+
+#include "dda/common/geometry.hpp"
+
+namespace dda::df {
+
+struct ContactCandidate {
+  int vblock = -1, vertex = -1;  // block and vertex index of P1
+  int eblock = -1, edge = -1;    // block and edge index (vertex edge -> edge+1)
+  double dn = 0;                 // signed normal distance at detection, m
+  bool vertex_vertex = false;    // came from the angle-angle rule
+};
+
+// Signed normal distance of p from edge a -> b (CCW edge of its block).
+double signed_distance(const Vec2& p, const Vec2& a, const Vec2& b);
+
+// All contacts between the given block pairs closer than `search_distance`.
+// `previous(vblock, vertex, eblock)` says whether the last step had a contact
+// with that vertex and block; it breaks near-ties of the entrance-edge rule
+// in favour of continuity (may be empty).
+std::vector<ContactCandidate> find_contacts(
+    const std::vector<Polygon2>& blocks, const std::vector<std::pair<int, int>>& pairs,
+    double search_distance, const std::function<bool(int, int, int)>& previous = {});
+
+}  // namespace dda::df

@@ -1,0 +1,124 @@
+#pragma once
+// Input of the 2D forward solver: blocks plus everything physical about them.
+//
+// A ModelInput is filled by the caller (later: the scenario reader) and turned
+// into a validated Model by build_model(), which resolves every default
+// (penalties, w0), locates points in blocks and throws InputError with one
+// sentence for anything a user could have got wrong. The solver only ever sees
+// a Model, so it never re-checks input.
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "dda/common/block_model.hpp"
+#include "dda/df/types.hpp"
+
+namespace dda::df {
+
+enum class PlaneMode { Stress, Strain };
+
+// Elastic rock of a block, per unit thickness.
+struct Material {
+  double density = 2600;   // kg/m^3
+  double young = 1e9;      // Pa
+  double poisson = 0.25;
+  PlaneMode plane = PlaneMode::Strain;
+};
+
+// Properties of one joint set (the edges that came from it).
+struct JointProperties {
+  double friction_deg = 30;          // Coulomb friction angle
+  double cohesion = 0;               // Pa (force per unit contact length per unit thickness)
+  double tensile_strength = 0;       // Pa, same units
+  std::optional<double> normal_penalty;  // N/m per unit thickness; default Control::penalty_factor * max E
+  std::optional<double> shear_penalty;   // N/m; default Control::shear_ratio * normal penalty
+  std::string friction_law = "coulomb";  // name of the FrictionLaw (see friction.hpp)
+};
+
+// A point of a block held at its initial position by a penalty spring.
+struct FixedPoint {
+  std::string name;
+  Vec2 position{0, 0};
+  int block = -1;                    // -1: the block containing `position`
+  std::optional<double> penalty;     // N/m; default Control::fixed_penalty_factor * pn
+};
+
+// A constant force applied at a material point of a block (it moves with it).
+struct PointLoad {
+  std::string name;
+  Vec2 position{0, 0};
+  Vec2 force{0, 0};                  // N per unit thickness
+  int block = -1;
+};
+
+// A material point whose history is recorded every step.
+struct MeasurementPoint {
+  std::string name;
+  Vec2 position{0, 0};
+  int block = -1;
+};
+
+struct Control {
+  double dt = 0;                     // s, the largest (and first) time step
+  double total_time = 0;             // s; run() stops here (or after `steps`)
+  int steps = 0;                     // used by run() when total_time is 0
+  double max_displacement_ratio = 0.01;  // g2: no vertex moves more than g2 * w0 per step
+  std::optional<double> w0;          // m; default half the model height
+  double dynamic = 1.0;              // k in [0, 1]: fraction of the end velocity carried on
+  int max_open_close = 6;            // open-close iterations before dt is cut
+  double penalty_factor = 50;        // default pn = penalty_factor * largest E (unit thickness)
+  double shear_ratio = 1.0;          // default ps = shear_ratio * pn
+  double fixed_penalty_factor = 10;  // default fixed-point penalty = factor * pn
+  double min_dt_ratio = 1e-3;        // dt is never cut below min_dt_ratio * dt
+};
+
+struct ModelInput {
+  BlockModel geometry;
+  std::vector<Material> materials{Material{}};
+  std::vector<int> block_material;          // empty: every block uses materials[0]
+  std::vector<JointProperties> joint_sets;  // index = joint set id of the edges
+  JointProperties default_joint;            // edges with a negative set id or no entry above
+  Vec2 gravity{0, -9.81};                   // m/s^2
+  std::vector<FixedPoint> fixed_points;
+  std::vector<PointLoad> loads;
+  std::vector<MeasurementPoint> measurements;
+  std::vector<Vector6d> initial_velocity;   // empty, or one per block [u, v, r, ex, ey, gxy] rates
+  std::vector<Vector3d> initial_stress;     // empty, or one per block [sx, sy, txy]
+  Control control;
+};
+
+// Fixed and measurement points of a blocks file become FixedPoint and
+// MeasurementPoint entries; load points take their force from `load_forces`
+// by name (a load point without a force is an InputError).
+void add_points_from_block_model(const BlockModel& geometry,
+                                 const std::map<std::string, Vec2>& load_forces, ModelInput& input);
+
+// Everything resolved: the solver reads only this.
+struct Model {
+  std::vector<Block> blocks;                // initial geometry (CCW)
+  std::vector<Material> materials;
+  std::vector<int> block_material;          // one per block
+  std::vector<JointProperties> joints;      // joint_sets, then the default joint (last)
+  std::vector<double> joint_pn, joint_ps;   // resolved penalties, one per joint
+  Vec2 gravity{0, -9.81};
+  std::vector<FixedPoint> fixed_points;     // block and penalty resolved
+  std::vector<PointLoad> loads;             // block resolved
+  std::vector<MeasurementPoint> measurements;
+  std::vector<Vector6d> initial_velocity;   // one per block
+  std::vector<Vector3d> initial_stress;     // one per block
+  Control control;                          // w0 resolved
+  double search_distance = 0;               // m, 2.5 * g2 * w0
+
+  int block_count() const { return static_cast<int>(blocks.size()); }
+  // Joint index for an edge's set id (the default joint for negative or unknown ids).
+  int joint_for_set(int set) const {
+    const int n = static_cast<int>(joints.size()) - 1;
+    return (set >= 0 && set < n) ? set : n;
+  }
+};
+
+// Validates the input and resolves defaults; throws InputError.
+Model build_model(ModelInput input);
+
+}  // namespace dda::df

@@ -1,0 +1,159 @@
+// Contact springs, friction forces and the open / sliding / locked decision.
+#include "dda/df/contact.hpp"
+
+#include <cmath>
+
+#include "dda/df/block_system.hpp"
+
+namespace dda::df {
+
+const char* to_string(ContactState s) {
+  switch (s) {
+    case ContactState::Open: return "open";
+    case ContactState::Sliding: return "sliding";
+    case ContactState::Locked: return "locked";
+  }
+  return "?";
+}
+
+ContactGeometry contact_geometry(const Polygon2& vi, const Vec2& ci, const Polygon2& vj, const Vec2& cj, int vertex,
+                                 int edge, double ref_ratio) {
+  const Vec2& p = vi[vertex];
+  const Vec2& a = vj[edge];
+  const Vec2& b = vj[(edge + 1) % vj.size()];
+  const Vec2 e = b - a;
+  ContactGeometry g;
+  g.length = e.norm();
+  g.tangent = e / g.length;
+
+  // dn * l = cross(P - A, B - A) is bilinear in the three points; its
+  // gradients with respect to P, A and B (they sum to zero: a rigid
+  // translation changes nothing) give the first-order change of dn.
+  g.dn0 = cross(p - a, e) / g.length;
+  const Vec2 grad_p(e.y(), -e.x());
+  const Vec2 grad_a(p.y() - b.y(), b.x() - p.x());
+  const Vec2 grad_b(a.y() - p.y(), p.x() - a.x());
+  const Matrix26d ti = t_matrix(ci, p);
+  g.en = ti.transpose() * grad_p / g.length;
+  g.gn = (t_matrix(cj, a).transpose() * grad_a + t_matrix(cj, b).transpose() * grad_b) / g.length;
+
+  // Shear: offset of P along the (fixed) tangent from the reference point
+  // P0, which moves with block j. The edge's own rotation changes ds only to
+  // second order while P stays near P0.
+  g.ratio0 = (p - a).dot(e) / (g.length * g.length);
+  const Vec2 p0 = a + ref_ratio * e;
+  g.ds0 = (p - p0).dot(g.tangent);
+  g.es = ti.transpose() * g.tangent;
+  g.gs = -t_matrix(cj, p0).transpose() * g.tangent;
+  g.gc = -t_matrix(cj, a + g.ratio0 * e).transpose() * g.tangent;
+  return g;
+}
+
+double tributary_length(const Polygon2& vi, int vertex, const Vec2& edge_tangent) {
+  constexpr double kSinTol = 0.173648;  // sin(10 degrees)
+  const int n = static_cast<int>(vi.size());
+  double len = 0;
+  for (const int other : {(vertex + n - 1) % n, (vertex + 1) % n}) {
+    const Vec2 side = vi[other] - vi[vertex];
+    const double l = side.norm();
+    if (l > 0 && std::abs(cross(side / l, edge_tangent)) <= kSinTol) len += 0.5 * l;
+  }
+  return len;
+}
+
+namespace {
+
+// Adds the penalty energy p/2 (s0 + a.di + b.dj)^2 of one spring.
+void add_spring(BlockSystem& sys, int i, int j, double p, double s0, const Vector6d& a, const Vector6d& b) {
+  sys.diagonal(i) += p * a * a.transpose();
+  sys.diagonal(j) += p * b * b.transpose();
+  sys.add_coupling(i, j, p * a * b.transpose());
+  sys.rhs(i) -= p * s0 * a;
+  sys.rhs(j) -= p * s0 * b;
+}
+
+FrictionInput friction_input(const Contact& c, double dt) {
+  return {c.normal_force, c.slip_velocity, c.length, dt, c.bonded};
+}
+
+}  // namespace
+
+void add_contact_terms(const Contact& c, const ContactLaw& law, double dt, BlockSystem& sys) {
+  if (c.state == ContactState::Open) return;
+  const ContactGeometry& g = c.geo;
+  add_spring(sys, c.vblock, c.eblock, law.pn, g.dn0, g.en, g.gn);
+  if (c.state == ContactState::Locked) {
+    add_spring(sys, c.vblock, c.eblock, law.ps, g.ds0, g.es, g.gs);
+  } else {
+    // Sliding: friction from the normal force of the previous iterate, on P
+    // against its slip and the reverse on the edge under P.
+    const double f = c.slip_sign * law.friction->strength(friction_input(c, dt), c.friction);
+    sys.rhs(c.vblock) -= f * g.es;  // es = T_i(P)^T t
+    sys.rhs(c.eblock) -= f * g.gc;  // gc = -T_j(Pc)^T t
+  }
+}
+
+ContactState update_contact(Contact& c, const ContactLaw& law, double dt, const Vector6d& di, const Vector6d& dj) {
+  ContactGeometry& g = c.geo;
+  const double dn = g.dn0 + g.en.dot(di) + g.gn.dot(dj);
+  const ContactState old = c.state;
+  const double friction_used =
+      old == ContactState::Sliding ? law.friction->strength(friction_input(c, dt), c.friction) : 0.0;
+  c.friction_settled = true;
+  auto lock = [&]() {
+    if (old != ContactState::Locked) {  // the shear spring starts from P's position at the step start
+      c.ref_ratio = g.ratio0;
+      g.ds0 = 0;
+      g.gs = g.gc;
+    }
+    return ContactState::Locked;
+  };
+  c.broke = false;
+  c.shear_force = 0;
+  c.slip_velocity = 0;
+
+  if (old == ContactState::Open) {
+    if (dn < 0) {
+      c.normal_force = -law.pn * dn;
+      return lock();
+    }
+    c.normal_force = 0;
+    return ContactState::Open;
+  }
+
+  const double n = -law.pn * dn;
+  const double tension_cap = c.bonded ? law.tensile_strength * c.length : 0.0;
+  if (n < -tension_cap) {
+    c.broke = c.bonded;
+    c.bonded = false;
+    c.normal_force = 0;
+    return ContactState::Open;
+  }
+  c.normal_force = n;
+  const double slip = g.es.dot(di) + g.gc.dot(dj);  // P relative to the edge point under it
+  c.slip_velocity = std::abs(slip) / dt;
+
+  if (old == ContactState::Locked) {
+    const double ds = g.ds0 + g.es.dot(di) + g.gs.dot(dj);
+    const double fs = -law.ps * ds;
+    if (std::abs(fs) > law.friction->strength(friction_input(c, dt), c.friction)) {
+      c.broke = c.bonded;
+      c.bonded = false;
+      c.slip_sign = ds > 0 ? 1 : -1;
+      c.shear_force = -c.slip_sign * law.friction->strength(friction_input(c, dt), c.friction);
+      return ContactState::Sliding;
+    }
+    c.shear_force = fs;
+    return ContactState::Locked;
+  }
+
+  // Sliding: it locks when P moves back against the assumed slip direction.
+  if (slip * c.slip_sign < 0) return lock();
+  const double friction_now = law.friction->strength(friction_input(c, dt), c.friction);
+  const double floor = 1e-10 * law.pn * g.length;  // the force of a 1e-10 l penetration
+  c.friction_settled = std::abs(friction_now - friction_used) <= 1e-3 * std::abs(friction_now) + floor;
+  c.shear_force = -c.slip_sign * friction_now;
+  return ContactState::Sliding;
+}
+
+}  // namespace dda::df

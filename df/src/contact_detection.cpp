@@ -1,0 +1,114 @@
+// Narrow phase: vertex-edge contacts and the entrance-edge rule.
+#include "dda/df/contact_detection.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <set>
+#include <tuple>
+
+namespace dda::df {
+namespace {
+
+int prev_index(int n, int v) { return (v + n - 1) % n; }
+int next_index(int n, int v) { return (v + 1) % n; }
+
+// Outward unit normal of edge k (CCW polygon).
+Vec2 outward_normal(const Polygon2& poly, int k) {
+  const Vec2 t = (poly[next_index(static_cast<int>(poly.size()), k)] - poly[k]).normalized();
+  return {t.y(), -t.x()};
+}
+
+// The vertex is its block's extreme point toward an edge with outward normal
+// n when both of its edges leave it on the outside of the edge's line (n
+// points from the edge's block toward the vertex's block). A tolerance of a
+// few degrees keeps the two contacts of a block resting flat but slightly
+// rotated.
+bool admissible(const Polygon2& poly, int v, const Vec2& n) {
+  constexpr double kSinTol = 0.0871557;  // sin(5 degrees)
+  const int m = static_cast<int>(poly.size());
+  const Vec2 a = (poly[prev_index(m, v)] - poly[v]).normalized();
+  const Vec2 b = (poly[next_index(m, v)] - poly[v]).normalized();
+  return a.dot(n) >= -kSinTol && b.dot(n) >= -kSinTol;
+}
+
+ContactCandidate make(const std::vector<Polygon2>& blocks, int i, int v, int j, int k, bool vv) {
+  const Polygon2& e = blocks[j];
+  const int m = static_cast<int>(e.size());
+  return {i, v, j, k, signed_distance(blocks[i][v], e[k], e[next_index(m, k)]), vv};
+}
+
+// One contact for vertices (i, v) and (j, w) that nearly coincide.
+void resolve_vertex_vertex(const std::vector<Polygon2>& blocks, int i, int v, int j, int w, double d0,
+                           const std::function<bool(int, int, int)>& previous,
+                           std::vector<ContactCandidate>& out) {
+  const int ni = static_cast<int>(blocks[i].size()), nj = static_cast<int>(blocks[j].size());
+  const std::array<ContactCandidate, 4> all{make(blocks, i, v, j, prev_index(nj, w), true),
+                                            make(blocks, i, v, j, w, true),
+                                            make(blocks, j, w, i, prev_index(ni, v), true),
+                                            make(blocks, j, w, i, v, true)};
+  const ContactCandidate* best = nullptr;
+  const double tie = 1e-3 * d0;
+  for (const ContactCandidate& c : all) {
+    if (!admissible(blocks[c.vblock], c.vertex, outward_normal(blocks[c.eblock], c.edge))) continue;
+    if (!best || c.dn > best->dn + tie) {
+      best = &c;
+    } else if (c.dn > best->dn - tie && previous && previous(c.vblock, c.vertex, c.eblock) &&
+               !previous(best->vblock, best->vertex, best->eblock)) {
+      best = &c;  // near-tie: keep the contact the last step had
+    }
+  }
+  if (best && best->dn <= d0) out.push_back(*best);
+}
+
+}  // namespace
+
+double signed_distance(const Vec2& p, const Vec2& a, const Vec2& b) {
+  const Vec2 e = b - a;
+  return cross(p - a, e) / e.norm();
+}
+
+std::vector<ContactCandidate> find_contacts(const std::vector<Polygon2>& blocks,
+                                            const std::vector<std::pair<int, int>>& pairs, double search_distance,
+                                            const std::function<bool(int, int, int)>& previous) {
+  const double d0 = search_distance;
+  std::vector<ContactCandidate> out;
+  std::set<std::array<int, 4>> vertex_pairs;  // (lower block, its vertex, other block, its vertex)
+
+  auto scan = [&](int i, int j) {  // vertices of i against edges of j
+    const Polygon2& pi = blocks[i];
+    const Polygon2& pj = blocks[j];
+    const int ni = static_cast<int>(pi.size()), nj = static_cast<int>(pj.size());
+    for (int v = 0; v < ni; ++v) {
+      const Vec2& p = pi[v];
+      for (int k = 0; k < nj; ++k) {
+        const Vec2& a = pj[k];
+        const Vec2& b = pj[next_index(nj, k)];
+        const Vec2 e = b - a;
+        const double l2 = e.squaredNorm();
+        if (l2 == 0) continue;
+        const double t = std::clamp((p - a).dot(e) / l2, 0.0, 1.0);
+        if ((a + t * e - p).norm() > d0) continue;
+        const double da = (p - a).norm(), db = (p - b).norm();
+        if (std::min(da, db) < d0) {
+          const int w = da <= db ? k : next_index(nj, k);
+          vertex_pairs.insert(i < j ? std::array<int, 4>{i, v, j, w} : std::array<int, 4>{j, w, i, v});
+          continue;
+        }
+        if (admissible(pi, v, outward_normal(pj, k))) out.push_back(make(blocks, i, v, j, k, false));
+      }
+    }
+  };
+  for (const auto& [a, b] : pairs) {
+    scan(a, b);
+    scan(b, a);
+  }
+  for (const auto& vp : vertex_pairs) resolve_vertex_vertex(blocks, vp[0], vp[1], vp[2], vp[3], d0, previous, out);
+
+  std::sort(out.begin(), out.end(), [](const ContactCandidate& x, const ContactCandidate& y) {
+    return std::tie(x.vblock, x.vertex, x.eblock, x.edge) < std::tie(y.vblock, y.vertex, y.eblock, y.edge);
+  });
+  return out;
+}
+
+}  // namespace dda::df

@@ -1,0 +1,25 @@
+// Coulomb-Mohr friction and the registry of friction laws.
+#include <cmath>
+
+#include "dda/common/error.hpp"
+#include "dda/df/friction.hpp"
+
+namespace dda::df {
+
+CoulombFriction::CoulombFriction(double friction_deg, double cohesion)
+    : tan_phi_(std::tan(deg2rad(friction_deg))), cohesion_(cohesion) {}
+
+double CoulombFriction::strength(const FrictionInput& in, const FrictionState& /*state*/) const {
+  // A contact in tension (N < 0) has no frictional strength; its bond, if
+  // any, is handled by the tensile check before friction is asked.
+  const double frictional = in.normal_force > 0 ? in.normal_force * tan_phi_ : 0.0;
+  return frictional + (in.bonded ? cohesion_ * in.contact_length : 0.0);
+}
+
+std::unique_ptr<FrictionLaw> make_friction_law(const JointProperties& joint) {
+  // One line per law.
+  if (joint.friction_law == "coulomb") return std::make_unique<CoulombFriction>(joint.friction_deg, joint.cohesion);
+  throw InputError("Unknown friction law '" + joint.friction_law + "' (known: coulomb).");
+}
+
+}  // namespace dda::df

@@ -1,0 +1,194 @@
+// Validation of the forward-solver input and resolution of its defaults.
+#include "dda/df/model.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "dda/common/error.hpp"
+#include "dda/df/friction.hpp"
+
+namespace dda::df {
+namespace {
+
+std::string num(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+void require(bool ok, const std::string& sentence) {
+  if (!ok) throw InputError(sentence);
+}
+
+bool finite(const Vec2& v) { return std::isfinite(v.x()) && std::isfinite(v.y()); }
+
+// Block containing p, or -1. A point on a shared edge goes to the first block.
+int locate(const std::vector<Block>& blocks, const Vec2& p) {
+  for (std::size_t b = 0; b < blocks.size(); ++b)
+    if (point_in_polygon(blocks[b].vertices, p)) return static_cast<int>(b);
+  return -1;
+}
+
+// Resolves `block` for a point: checks a given index, or finds the block.
+int resolve_block(const std::vector<Block>& blocks, int block, const Vec2& p, const std::string& what) {
+  require(finite(p), what + " has a position that is not a finite number.");
+  if (block >= 0) {
+    require(block < static_cast<int>(blocks.size()),
+            what + " refers to block " + std::to_string(block) + " but the model has " +
+                std::to_string(blocks.size()) + " blocks.");
+    return block;
+  }
+  const int b = locate(blocks, p);
+  require(b >= 0, what + " at (" + num(p.x()) + ", " + num(p.y()) + ") lies outside every block.");
+  return b;
+}
+
+void check_material(const Material& m, std::size_t i) {
+  const std::string w = "material " + std::to_string(i);
+  require(std::isfinite(m.density) && m.density > 0, w + " has a non-positive density (" + num(m.density) + " kg/m^3).");
+  require(std::isfinite(m.young) && m.young > 0, w + " has a non-positive Young's modulus (" + num(m.young) + " Pa).");
+  require(std::isfinite(m.poisson) && m.poisson > -1 && m.poisson < 0.5,
+          w + " has a Poisson's ratio outside (-1, 0.5) (" + num(m.poisson) + ").");
+}
+
+void check_joint(const JointProperties& j, const std::string& w) {
+  require(std::isfinite(j.friction_deg) && j.friction_deg >= 0 && j.friction_deg < 90,
+          w + " has a friction angle outside [0, 90) degrees (" + num(j.friction_deg) + ").");
+  require(std::isfinite(j.cohesion) && j.cohesion >= 0, w + " has a negative cohesion (" + num(j.cohesion) + " Pa).");
+  require(std::isfinite(j.tensile_strength) && j.tensile_strength >= 0,
+          w + " has a negative tensile strength (" + num(j.tensile_strength) + " Pa).");
+  require(!j.normal_penalty || (std::isfinite(*j.normal_penalty) && *j.normal_penalty > 0),
+          w + " has a non-positive normal penalty.");
+  require(!j.shear_penalty || (std::isfinite(*j.shear_penalty) && *j.shear_penalty > 0),
+          w + " has a non-positive shear penalty.");
+  make_friction_law(j);  // throws for an unknown law name
+}
+
+void check_control(const Control& c) {
+  require(std::isfinite(c.dt) && c.dt > 0, "The time step dt must be positive (got " + num(c.dt) + " s).");
+  require(std::isfinite(c.total_time) && c.total_time >= 0, "The total time must not be negative.");
+  require(c.steps >= 0, "The number of steps must not be negative.");
+  require(std::isfinite(c.max_displacement_ratio) && c.max_displacement_ratio > 0 && c.max_displacement_ratio < 1,
+          "The maximum displacement ratio g2 must lie in (0, 1) (got " + num(c.max_displacement_ratio) + ").");
+  require(!c.w0 || (std::isfinite(*c.w0) && *c.w0 > 0), "The reference length w0 must be positive.");
+  require(std::isfinite(c.dynamic) && c.dynamic >= 0 && c.dynamic <= 1,
+          "The dynamic parameter k must lie in [0, 1] (got " + num(c.dynamic) + ").");
+  require(c.max_open_close >= 1, "The open-close iteration limit must be at least 1.");
+  require(std::isfinite(c.penalty_factor) && c.penalty_factor > 0, "The penalty factor must be positive.");
+  require(std::isfinite(c.shear_ratio) && c.shear_ratio > 0, "The shear penalty ratio must be positive.");
+  require(std::isfinite(c.fixed_penalty_factor) && c.fixed_penalty_factor > 0,
+          "The fixed-point penalty factor must be positive.");
+  require(std::isfinite(c.min_dt_ratio) && c.min_dt_ratio > 0 && c.min_dt_ratio <= 1,
+          "The smallest time-step ratio must lie in (0, 1].");
+}
+
+}  // namespace
+
+void add_points_from_block_model(const BlockModel& geometry, const std::map<std::string, Vec2>& load_forces,
+                                 ModelInput& input) {
+  for (const LocatedPoint& lp : geometry.points) {
+    const ModelPoint& p = lp.point;
+    switch (p.kind) {
+      case PointKind::Fixed:
+        input.fixed_points.push_back({p.name, p.p, lp.block, std::nullopt});
+        break;
+      case PointKind::Measurement:
+        input.measurements.push_back({p.name, p.p, lp.block});
+        break;
+      case PointKind::Load: {
+        const auto it = load_forces.find(p.name);
+        require(it != load_forces.end(), "Load point '" + p.name + "' has no force.");
+        input.loads.push_back({p.name, p.p, it->second, lp.block});
+        break;
+      }
+      case PointKind::Hole:
+        break;  // consumed by the cutter
+    }
+  }
+}
+
+Model build_model(ModelInput in) {
+  Model m;
+  require(!in.geometry.blocks.empty(), "The model has no blocks.");
+  const std::size_t nb = in.geometry.blocks.size();
+  for (std::size_t b = 0; b < nb; ++b) {
+    Block blk = in.geometry.blocks[b];
+    require(blk.vertices.size() >= 3, "Block " + std::to_string(b) + " has fewer than three vertices.");
+    for (const Vec2& v : blk.vertices) require(finite(v), "Block " + std::to_string(b) + " has a vertex that is not a finite number.");
+    require(signed_area(blk.vertices) > 0,
+            "Block " + std::to_string(b) + " is not counter-clockwise or has no area.");
+    if (blk.edge_set.size() != blk.vertices.size()) blk.edge_set.assign(blk.vertices.size(), kBoundarySet);
+    m.blocks.push_back(std::move(blk));
+  }
+
+  require(!in.materials.empty(), "The model has no material.");
+  for (std::size_t i = 0; i < in.materials.size(); ++i) check_material(in.materials[i], i);
+  m.materials = in.materials;
+  if (in.block_material.empty()) in.block_material.assign(nb, 0);
+  require(in.block_material.size() == nb, "The block material list has " + std::to_string(in.block_material.size()) +
+                                              " entries for " + std::to_string(nb) + " blocks.");
+  for (std::size_t b = 0; b < nb; ++b)
+    require(in.block_material[b] >= 0 && in.block_material[b] < static_cast<int>(in.materials.size()),
+            "Block " + std::to_string(b) + " refers to material " + std::to_string(in.block_material[b]) +
+                ", which does not exist.");
+  m.block_material = in.block_material;
+
+  check_control(in.control);
+  for (std::size_t j = 0; j < in.joint_sets.size(); ++j) check_joint(in.joint_sets[j], "Joint set " + std::to_string(j));
+  check_joint(in.default_joint, "The default joint");
+  m.joints = in.joint_sets;
+  m.joints.push_back(in.default_joint);
+
+  // Penalties: one global default, pn = factor * (largest E) per unit
+  // thickness (the classic DDA choice of 10-100 E), ps = ratio * pn.
+  double emax = 0;
+  for (const Material& mat : m.materials) emax = std::max(emax, mat.young);
+  const double pn_default = in.control.penalty_factor * emax;
+  for (const JointProperties& j : m.joints) {
+    const double pn = j.normal_penalty.value_or(pn_default);
+    m.joint_pn.push_back(pn);
+    m.joint_ps.push_back(j.shear_penalty.value_or(in.control.shear_ratio * pn));
+  }
+
+  require(finite(in.gravity), "The gravity vector is not a finite number.");
+  m.gravity = in.gravity;
+
+  for (FixedPoint f : in.fixed_points) {
+    f.block = resolve_block(m.blocks, f.block, f.position, "Fixed point '" + f.name + "'");
+    require(!f.penalty || (std::isfinite(*f.penalty) && *f.penalty > 0),
+            "Fixed point '" + f.name + "' has a non-positive penalty.");
+    if (!f.penalty) f.penalty = in.control.fixed_penalty_factor * pn_default;
+    m.fixed_points.push_back(f);
+  }
+  for (PointLoad l : in.loads) {
+    l.block = resolve_block(m.blocks, l.block, l.position, "Load point '" + l.name + "'");
+    require(finite(l.force), "Load point '" + l.name + "' has a force that is not a finite number.");
+    m.loads.push_back(l);
+  }
+  for (MeasurementPoint p : in.measurements) {
+    p.block = resolve_block(m.blocks, p.block, p.position, "Measurement point '" + p.name + "'");
+    m.measurements.push_back(p);
+  }
+
+  if (in.initial_velocity.empty()) in.initial_velocity.assign(nb, Vector6d::Zero());
+  require(in.initial_velocity.size() == nb, "The initial velocity list must have one entry per block.");
+  m.initial_velocity = in.initial_velocity;
+  if (in.initial_stress.empty()) in.initial_stress.assign(nb, Vector3d::Zero());
+  require(in.initial_stress.size() == nb, "The initial stress list must have one entry per block.");
+  m.initial_stress = in.initial_stress;
+
+  // w0: half the model height unless given; it scales the displacement limit
+  // and the contact search distance (2.5 times the allowed step movement).
+  if (!in.control.w0) {
+    double lo = m.blocks[0].vertices[0].y(), hi = lo;
+    for (const Block& b : m.blocks)
+      for (const Vec2& v : b.vertices) lo = std::min(lo, v.y()), hi = std::max(hi, v.y());
+    in.control.w0 = 0.5 * (hi - lo);
+  }
+  m.control = in.control;
+  m.search_distance = 2.5 * m.control.max_displacement_ratio * *m.control.w0;
+  return m;
+}
+
+}  // namespace dda::df

@@ -1,0 +1,281 @@
+// Time stepping: contact detection, open-close iteration, step control.
+#include "dda/df/simulation.hpp"
+
+#include <Eigen/Cholesky>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <tuple>
+
+#include "block_terms.hpp"
+#include "dda/df/broad_phase.hpp"
+#include "dda/df/contact_detection.hpp"
+
+namespace dda::df {
+
+Simulation::Simulation(Model model, std::unique_ptr<LinearSolver> solver)
+    : model_(std::move(model)), solver_(std::move(solver)) {
+  for (const JointProperties& j : model_.joints) friction_.push_back(make_friction_law(j));
+  for (const Material& m : model_.materials) emat_.push_back(elastic_matrix(m));
+  for (int i = 0; i < model_.block_count(); ++i) {
+    BlockState b;
+    b.vertices = model_.blocks[i].vertices;
+    b.geometry = block_geometry(b.vertices);
+    b.velocity = b.velocity_end = model_.initial_velocity[i];
+    b.stress = model_.initial_stress[i];
+    blocks_.push_back(std::move(b));
+  }
+  for (const FixedPoint& f : model_.fixed_points) fixed_anchor_.push_back(f.position);
+  fixed_pos_ = fixed_anchor_;
+  for (const PointLoad& l : model_.loads) load_pos_.push_back(l.position);
+  for (const MeasurementPoint& p : model_.measurements) measurement_pos_.push_back(p.position);
+  histories_.resize(model_.measurements.size());
+  dt_ = model_.control.dt;
+  max_step_displacement_ = model_.control.max_displacement_ratio * *model_.control.w0;
+  record_measurements();
+}
+
+const StepRecord& Simulation::step() { return advance(std::numeric_limits<double>::infinity()); }
+
+void Simulation::run() {
+  const Control& c = model_.control;
+  if (c.total_time > 0) {
+    run_until(c.total_time);
+  } else {
+    for (int s = 0; s < c.steps; ++s) step();
+  }
+}
+
+void Simulation::run_until(double t) {
+  // Steps shorter than a millionth of dt are rounding left-overs, not steps.
+  const double eps = 1e-6 * model_.control.dt;
+  while (t - time_ > eps) advance(t - time_);
+}
+
+ContactLaw Simulation::law_of(const Contact& c) const {
+  return {model_.joint_pn[c.joint], model_.joint_ps[c.joint], model_.joints[c.joint].tensile_strength,
+          friction_[c.joint].get()};
+}
+
+int Simulation::joint_of(int vblock, int vertex, int eblock, int edge) const {
+  // The joint set of the edge; a boundary or artificial edge takes the set of
+  // an edge at the vertex instead (the face of the other block it touches).
+  const Block& e = model_.blocks[eblock];
+  if (e.edge_set[edge] >= 0) return model_.joint_for_set(e.edge_set[edge]);
+  const Block& v = model_.blocks[vblock];
+  const int n = static_cast<int>(v.edge_set.size());
+  for (const int k : {vertex, (vertex + n - 1) % n})
+    if (v.edge_set[k] >= 0) return model_.joint_for_set(v.edge_set[k]);
+  return model_.joint_for_set(-1);
+}
+
+void Simulation::detect_contacts() {
+  const int nb = model_.block_count();
+  const double d0 = model_.search_distance;
+  std::vector<Box2> boxes(nb);
+  std::vector<Polygon2> polys(nb);
+  for (int i = 0; i < nb; ++i) {
+    boxes[i] = bounding_box(blocks_[i].vertices);
+    polys[i] = blocks_[i].vertices;
+  }
+  // Contacts of the last step by (vertex block, vertex, edge block[, edge]):
+  // a vertex that slides onto the next edge of the same block keeps its state.
+  std::map<std::tuple<int, int, int, int>, int> exact;
+  std::map<std::tuple<int, int, int>, int> by_vertex;
+  for (int k = 0; k < static_cast<int>(contacts_.size()); ++k) {
+    const Contact& c = contacts_[k];
+    exact[{c.vblock, c.vertex, c.eblock, c.edge}] = k;
+    by_vertex[{c.vblock, c.vertex, c.eblock}] = k;
+  }
+  auto previous = [&by_vertex](int vb, int v, int eb) { return by_vertex.count({vb, v, eb}) > 0; };
+  const auto candidates = find_contacts(polys, broad_phase(boxes, 0.5 * d0), d0, previous);
+
+  std::vector<Contact> next;
+  next.reserve(candidates.size());
+  for (const ContactCandidate& cand : candidates) {
+    Contact c;
+    c.vblock = cand.vblock;
+    c.vertex = cand.vertex;
+    c.eblock = cand.eblock;
+    c.edge = cand.edge;
+    c.joint = joint_of(c.vblock, c.vertex, c.eblock, c.edge);
+    bool keep_reference = false;
+    const auto ex = exact.find({c.vblock, c.vertex, c.eblock, c.edge});
+    const auto bv = by_vertex.find({c.vblock, c.vertex, c.eblock});
+    if (ex != exact.end() || bv != by_vertex.end()) {
+      const Contact& old = contacts_[ex != exact.end() ? ex->second : bv->second];
+      c.state = old.state;
+      c.slip_sign = old.slip_sign;
+      c.normal_force = old.normal_force;
+      c.shear_force = old.shear_force;
+      c.slip_velocity = old.slip_velocity;
+      c.bonded = old.bonded;
+      c.friction = old.friction;
+      c.ref_ratio = old.ref_ratio;
+      keep_reference = ex != exact.end() && old.state == ContactState::Locked;
+    } else if (step_count_ == 0) {
+      // Bonds exist only between faces in touch at the start.
+      const JointProperties& j = model_.joints[c.joint];
+      c.bonded = (j.cohesion > 0 || j.tensile_strength > 0) && std::abs(cand.dn) <= 1e-3 * d0;
+      if (c.bonded) c.state = ContactState::Locked;
+    }
+    const BlockState& bi = blocks_[c.vblock];
+    const BlockState& bj = blocks_[c.eblock];
+    c.geo = contact_geometry(bi.vertices, bi.geometry.centroid, bj.vertices, bj.geometry.centroid, c.vertex, c.edge,
+                             c.ref_ratio);
+    if (!keep_reference) {  // shear is measured from where P is now
+      c.ref_ratio = c.geo.ratio0;
+      c.geo.ds0 = 0;
+      c.geo.gs = c.geo.gc;
+    }
+    c.length = tributary_length(bi.vertices, c.vertex, c.geo.tangent);
+    next.push_back(std::move(c));
+  }
+  contacts_ = std::move(next);
+}
+
+void Simulation::assemble(double dt, const std::vector<Contact>& contacts) {
+  system_.reset(model_.block_count());
+  for (int i = 0; i < model_.block_count(); ++i) {
+    const int m = model_.block_material[i];
+    add_block_terms(i, blocks_[i], model_.materials[m], emat_[m], model_.gravity, dt, system_);
+  }
+  for (std::size_t k = 0; k < model_.fixed_points.size(); ++k) {
+    const FixedPoint& f = model_.fixed_points[k];
+    // The spring pulls the point back to where it was fixed, so anchors do
+    // not drift however many steps are taken.
+    add_point_spring(f.block, blocks_[f.block], fixed_pos_[k], fixed_anchor_[k] - fixed_pos_[k], *f.penalty,
+                     system_);
+  }
+  for (std::size_t k = 0; k < model_.loads.size(); ++k) {
+    const PointLoad& l = model_.loads[k];
+    add_point_load(l.block, blocks_[l.block], load_pos_[k], l.force, system_);
+  }
+  for (const Contact& c : contacts) add_contact_terms(c, law_of(c), dt, system_);
+}
+
+bool Simulation::open_close(double dt, std::vector<Contact>& contacts, Eigen::VectorXd& d, int& iterations) {
+  for (iterations = 1; iterations <= model_.control.max_open_close; ++iterations) {
+    assemble(dt, contacts);
+    d = solver_->solve(system_.lower(), system_.rhs());
+    bool changed = false;
+    for (Contact& c : contacts) {
+      const ContactState old = c.state;
+      const int old_sign = c.slip_sign;
+      c.state = update_contact(c, law_of(c), dt, d.segment<kDofs>(kDofs * c.vblock),
+                               d.segment<kDofs>(kDofs * c.eblock));
+      changed = changed || c.state != old || (c.state == ContactState::Sliding && c.slip_sign != old_sign) ||
+                !c.friction_settled;
+    }
+    if (!changed) return true;
+  }
+  iterations = model_.control.max_open_close;
+  return false;
+}
+
+double Simulation::max_vertex_displacement(const Eigen::VectorXd& d) const {
+  double worst = 0;
+  for (int i = 0; i < model_.block_count(); ++i) {
+    const Vector6d di = d.segment<kDofs>(kDofs * i);
+    const Vec2& c = blocks_[i].geometry.centroid;
+    for (const Vec2& v : blocks_[i].vertices) worst = std::max(worst, (move_point(c, di, v) - v).norm());
+  }
+  return worst;
+}
+
+const StepRecord& Simulation::advance(double max_dt) {
+  detect_contacts();
+  const std::vector<Contact> start = contacts_;
+  const Control& ctl = model_.control;
+  const double dt_min = ctl.min_dt_ratio * ctl.dt;
+  StepRecord rec;
+  Eigen::VectorXd d;
+  for (;;) {
+    const bool shortened = max_dt < dt_;
+    const double dt = std::min(dt_, max_dt);
+    std::vector<Contact> work = start;
+    int iterations = 0;
+    const bool settled = open_close(dt, work, d, iterations);
+    const double moved = max_vertex_displacement(d);
+    const bool too_far = moved > max_step_displacement_;
+    if ((!settled || too_far) && dt > dt_min * (1 + 1e-9)) {
+      // Redo with a smaller step: cut to what the displacement limit
+      // allows, or by 3 when the contact states did not settle.
+      const double factor = too_far ? std::min(0.5, 0.9 * max_step_displacement_ / moved) : 1.0 / 3.0;
+      dt_ = std::max(dt_min, dt * factor);
+      ++rec.dt_cuts;
+      continue;
+    }
+    rec.open_close_iterations = iterations;
+    rec.converged = settled;
+    rec.max_displacement = moved;
+    accept(dt, d, work, rec);
+    // Easy steps let dt grow back gradually toward the user's dt.
+    if (!shortened && rec.dt_cuts == 0) dt_ = std::min(ctl.dt, dt_ * 1.1);
+    break;
+  }
+  log_.push_back(rec);
+  return log_.back();
+}
+
+void Simulation::accept(double dt, const Eigen::VectorXd& d, std::vector<Contact>& contacts, StepRecord& rec) {
+  // Points ride with their blocks; move them before the centroids change.
+  auto move = [&](int block, Vec2& p) {
+    p = move_point(blocks_[block].geometry.centroid, d.segment<kDofs>(kDofs * block), p);
+  };
+  for (std::size_t k = 0; k < fixed_pos_.size(); ++k) move(model_.fixed_points[k].block, fixed_pos_[k]);
+  for (std::size_t k = 0; k < load_pos_.size(); ++k) move(model_.loads[k].block, load_pos_[k]);
+  for (std::size_t k = 0; k < measurement_pos_.size(); ++k) move(model_.measurements[k].block, measurement_pos_[k]);
+
+  double kinetic = 0, elastic = 0;
+  for (int i = 0; i < model_.block_count(); ++i) {
+    BlockState& b = blocks_[i];
+    const Vector6d di = d.segment<kDofs>(kDofs * i);
+    const int mat = model_.block_material[i];
+    const Vector6d v1 = 2.0 / dt * di - b.velocity;  // end velocity, constant acceleration
+    kinetic += 0.5 * v1.dot(mass_matrix(b.geometry, model_.materials[mat].density) * v1);
+    for (Vec2& v : b.vertices) v = move_point(b.geometry.centroid, di, v);
+    b.geometry = block_geometry(b.vertices);
+    b.stress += emat_[mat] * di.tail<3>();
+    elastic += 0.5 * b.geometry.area * b.stress.dot(emat_[mat].ldlt().solve(b.stress));
+    b.velocity = model_.control.dynamic * v1;
+    b.velocity_end = v1;
+  }
+
+  for (Contact& c : contacts) {
+    const FrictionLaw& law = *friction_[c.joint];
+    law.advance({c.normal_force, c.slip_velocity, c.length, dt, c.bonded}, c.friction);
+    if (c.state == ContactState::Sliding) c.friction.slip += c.slip_velocity * dt;
+    switch (c.state) {
+      case ContactState::Open: ++rec.open; break;
+      case ContactState::Sliding: ++rec.sliding; break;
+      case ContactState::Locked: ++rec.locked; break;
+    }
+  }
+  contacts_ = std::move(contacts);
+  time_ += dt;
+  ++step_count_;
+  rec.step = step_count_;
+  rec.time = time_;
+  rec.dt = dt;
+  rec.kinetic_energy = kinetic;
+  rec.elastic_energy = elastic;
+  record_measurements();
+}
+
+void Simulation::record_measurements() {
+  for (std::size_t k = 0; k < measurement_pos_.size(); ++k) {
+    const int b = model_.measurements[k].block;
+    const BlockState& s = blocks_[b];
+    MeasurementSample m;
+    m.time = time_;
+    m.position = measurement_pos_[k];
+    m.displacement = measurement_pos_[k] - model_.measurements[k].position;
+    m.velocity = t_matrix(s.geometry.centroid, m.position) * s.velocity_end;
+    m.stress = s.stress;
+    histories_[k].push_back(m);
+  }
+}
+
+}  // namespace dda::df

@@ -1,0 +1,140 @@
+// Contact geometry: the sign convention (penetration negative, DDA_FORMULATION.md
+// "Contacts"), the linearisation of dn, the entrance-edge rule for
+// vertex-vertex contacts, and the broad phase. Expected values are worked by
+// hand in the comments.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+
+#include "df_test_models.hpp"
+#include "dda/df/block_kinematics.hpp"
+#include "dda/df/broad_phase.hpp"
+#include "dda/df/contact.hpp"
+#include "dda/df/contact_detection.hpp"
+
+namespace dda::df {
+namespace {
+
+using test::rectangle;
+
+TEST(ContactSign, PenetrationIsNegative) {
+  // Unit square [0,1]^2; its top edge runs (1,1) -> (0,1) (edge 2, CCW).
+  const Polygon2 sq = rectangle(0, 0, 1, 1);
+  EXPECT_NEAR(signed_distance({0.5, 1.2}, sq[2], sq[3]), 0.2, 1e-15);    // above: outside
+  EXPECT_NEAR(signed_distance({0.5, 0.9}, sq[2], sq[3]), -0.1, 1e-15);   // below: inside
+  EXPECT_NEAR(signed_distance({0.5, -0.3}, sq[0], sq[1]), 0.3, 1e-15);   // under the bottom edge
+}
+
+TEST(ContactSign, DetectedRestingContactHasNegativeDn) {
+  // A 1x1 block sunk 1 mm into a 3x1 base: its two bottom vertices touch the
+  // base's top edge (edge 2) with dn = -0.001.
+  const std::vector<Polygon2> blocks{rectangle(-1, -1, 3, 1), rectangle(0, -0.001, 1, 1)};
+  const auto found = find_contacts(blocks, {{0, 1}}, 0.01);
+  ASSERT_EQ(found.size(), 2u);
+  for (const ContactCandidate& c : found) {
+    EXPECT_EQ(c.vblock, 1);
+    EXPECT_EQ(c.eblock, 0);
+    EXPECT_EQ(c.edge, 2);
+    EXPECT_NEAR(c.dn, -0.001, 1e-12);
+    EXPECT_FALSE(c.vertex_vertex);
+  }
+}
+
+TEST(ContactGeometry, LinearisedDistanceMatchesMovedGeometry) {
+  // dn0 + en.di + gn.dj against the exact distance after moving both blocks
+  // by small increments. The linearisation holds the edge length l at its
+  // start value (classic DDA), so the error is |d|^2 plus dn0 * dl / l:
+  // second order for a contact that is nearly closed (dn0 = 0.5 mm here).
+  const Polygon2 base = rectangle(-1, -1, 3, 1);
+  const Polygon2 top = rectangle(0.2, 0.0005, 1, 0.5);
+  const Vec2 cb = block_geometry(base).centroid, ct = block_geometry(top).centroid;
+  Vector6d di, dj;
+  di << 1e-4, -2e-4, 3e-4, 1e-4, -2e-4, 5e-5;
+  dj << -1e-4, 1e-4, -2e-4, 2e-4, 1e-4, -1e-4;
+  for (int v = 0; v < 2; ++v) {
+    const ContactGeometry g = contact_geometry(top, ct, base, cb, v, 2, 0.5);
+    const Vec2 p = top[v] + t_matrix(ct, top[v]) * di;
+    const Vec2 a = base[2] + t_matrix(cb, base[2]) * dj, b = base[3] + t_matrix(cb, base[3]) * dj;
+    const double exact = signed_distance(p, a, b);
+    const double linear = g.dn0 + g.en.dot(di) + g.gn.dot(dj);
+    EXPECT_NEAR(linear, exact, 1e-6) << "vertex " << v;  // |d|^2 ~ 1e-7
+    EXPECT_GT(std::abs(linear - g.dn0), 1e-5);  // the increments do change dn
+    EXPECT_NEAR(g.dn0, 0.0005, 1e-15);
+  }
+}
+
+TEST(EntranceEdge, VertexEntersThroughTopEdge) {
+  // Block j: unit square; corner Q = (1,1). Block i: a diamond whose lowest
+  // vertex P = (0.999, 0.9995) is 0.5 mm below the top face and 1 mm left of
+  // the right face. Its edges rise at +-45 degrees, so it can only have come
+  // through the top edge (the right-face candidate is inadmissible: the
+  // diamond's left edge would cross it). Expected: P against edge 2 (top),
+  // dn = -0.0005.
+  const Vec2 p(0.999, 0.9995);
+  const Polygon2 diamond{p, p + Vec2(0.5, 0.5), p + Vec2(0, 1), p + Vec2(-0.5, 0.5)};
+  const std::vector<Polygon2> blocks{rectangle(0, 0, 1, 1), diamond};
+  const auto found = find_contacts(blocks, {{0, 1}}, 0.01);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_TRUE(found[0].vertex_vertex);
+  EXPECT_EQ(found[0].vblock, 1);
+  EXPECT_EQ(found[0].vertex, 0);
+  EXPECT_EQ(found[0].eblock, 0);
+  EXPECT_EQ(found[0].edge, 2);
+  EXPECT_NEAR(found[0].dn, -0.0005, 1e-12);
+}
+
+TEST(EntranceEdge, VertexEntersThroughSideEdge) {
+  // Same square; block i now has its corner P = (0.9995, 0.999) with edges
+  // going right (+x) and up-right, i.e. a block lying to the right. P is
+  // 0.5 mm inside the right face and 1 mm below the top face: it came in
+  // through the right edge (edge 1, (1,0) -> (1,1)), the smaller
+  // penetration, with dn = -0.0005.
+  const Vec2 p(0.9995, 0.999);
+  const Polygon2 wedge{p, p + Vec2(1, 0), p + Vec2(1, 1)};
+  const std::vector<Polygon2> blocks{rectangle(0, 0, 1, 1), wedge};
+  const auto found = find_contacts(blocks, {{0, 1}}, 0.01);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_EQ(found[0].vblock, 1);
+  EXPECT_EQ(found[0].vertex, 0);
+  EXPECT_EQ(found[0].eblock, 0);
+  EXPECT_EQ(found[0].edge, 1);
+  EXPECT_NEAR(found[0].dn, -0.0005, 1e-12);
+}
+
+TEST(EntranceEdge, FarBlocksHaveNoContact) {
+  const std::vector<Polygon2> blocks{rectangle(0, 0, 1, 1), rectangle(1.5, 0, 1, 1)};
+  EXPECT_TRUE(find_contacts(blocks, {{0, 1}}, 0.1).empty());
+}
+
+TEST(BroadPhase, SameAsBruteForce) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> pos(0, 50), size(0.2, 3);
+  std::vector<Box2> boxes;
+  for (int i = 0; i < 400; ++i) {
+    Box2 b;
+    b.lo = {pos(rng), pos(rng)};
+    b.hi = b.lo + Vec2(size(rng), size(rng));
+    boxes.push_back(b);
+  }
+  boxes.push_back({{-5, -5}, {60, 0}});  // one huge block (a base)
+  const double margin = 0.1;
+  std::vector<std::pair<int, int>> brute;
+  for (int i = 0; i < static_cast<int>(boxes.size()); ++i)
+    for (int j = i + 1; j < static_cast<int>(boxes.size()); ++j)
+      if (boxes[i].lo.x() - margin <= boxes[j].hi.x() + margin && boxes[j].lo.x() - margin <= boxes[i].hi.x() + margin &&
+          boxes[i].lo.y() - margin <= boxes[j].hi.y() + margin && boxes[j].lo.y() - margin <= boxes[i].hi.y() + margin)
+        brute.emplace_back(i, j);
+  EXPECT_EQ(broad_phase(boxes, margin), brute);
+}
+
+TEST(TributaryLength, FaceShareAndCorner) {
+  // Bottom-left vertex of a 2 x 1 block on a horizontal edge: half the
+  // bottom face counts, the vertical side does not.
+  const Polygon2 r = rectangle(0, 0, 2, 1);
+  EXPECT_NEAR(tributary_length(r, 0, Vec2(1, 0)), 1.0, 1e-15);
+  EXPECT_NEAR(tributary_length(test::rotated(r, 0.7), 0, Vec2(1, 0)), 0.0, 1e-15);
+}
+
+}  // namespace
+}  // namespace dda::df
