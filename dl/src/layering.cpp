@@ -84,15 +84,19 @@ double expected_bed_count(const LayeringSpec& spec, const Polygon2& domain) {
   return (f.w_hi - f.w_lo) / mean + 1;
 }
 
-std::vector<Layer> stack_beds(const LayeringSpec& spec, const Polygon2& domain, std::uint64_t seed) {
+std::vector<Layer> stack_beds(const LayeringSpec& spec, const Polygon2& domain, std::uint64_t seed,
+                              std::vector<double>* drawn_thickness) {
   std::vector<Layer> beds;
+  if (drawn_thickness) drawn_thickness->clear();
   if (domain.empty()) return beds;
   const BedFrame f = bed_frame(spec.dip_deg, domain);
   const double tiny = 1e-12 * std::max(1.0, f.w_hi - f.w_lo);
   Stream rng(seed, "layering.thickness");
   double w = f.w_lo;
   while (w < f.w_hi - tiny) {
-    const double top = std::min(w + draw_thickness(spec.thickness, rng), f.w_hi);
+    const double drawn = draw_thickness(spec.thickness, rng);
+    const double top = std::min(w + drawn, f.w_hi);
+    if (drawn_thickness) drawn_thickness->push_back(drawn);
     Layer layer;
     layer.bottom = w;
     layer.top = top;
@@ -127,7 +131,8 @@ LayeringOutput generate_layering(const LayeringSpec& spec, const Polygon2& domai
   const BedFrame f = bed_frame(spec.dip_deg, domain);
   out.along = f.along;
   out.normal = f.normal;
-  out.layers = stack_beds(spec, domain, seed);
+  std::vector<double> drawn;
+  out.layers = stack_beds(spec, domain, seed, &drawn);
   const double margin = 1e-6 * std::max(1.0, f.q_hi - f.q_lo);
 
   // Interior bed boundaries, as long as the domain is wide, clipped to it.
@@ -149,7 +154,7 @@ LayeringOutput generate_layering(const LayeringSpec& spec, const Polygon2& domai
       LayerSetInBed& stats = out.per_set[k][i];
       Stream rng(seed, tag, i);
       const double h = bed.thickness();
-      const double median = h / set.fsi;
+      const double median = drawn[i] / set.fsi;  // the whole bed's FSI, also for the cut top bed
       const double length = h / sin_rel;           // joint length from bottom to top
       const double shift = length * d.dot(f.along);  // offset of the top end along the beds
       // Position of the bottom end along the beds; a random phase before the
@@ -179,7 +184,7 @@ LayeringOutput generate_layering(const LayeringSpec& spec, const Polygon2& domai
     Layer& layer = out.layers[i];
     layer.target_fsi = spec.sets[0].fsi;
     const double m = out.per_set[0][i].median_spacing();
-    layer.realised_fsi = m > 0 ? layer.thickness() / m : 0;
+    layer.realised_fsi = m > 0 ? drawn[i] / m : 0;
   }
   return out;
 }

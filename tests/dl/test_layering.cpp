@@ -110,6 +110,9 @@ TEST(DlLayering, JointsSpanTheirBedExactlyAndFsiIsMet) {
   for (std::size_t i = 0; i < out.layers.size(); ++i) {
     const auto& st = out.per_set[0][i];
     if (st.spacings.size() < 10) continue;
+    // The domain cuts the top bed; its spacing follows the drawn thickness
+    // (checked in TopBedCutByTheDomainKeepsItsDrawnSpacing).
+    if (i + 1 == out.layers.size()) continue;
     const Layer& bed = out.layers[i];
     EXPECT_EQ(bed.target_fsi, 1.3);
     const double rel_se = 0.5 / std::sqrt(static_cast<double>(st.spacings.size()));
@@ -125,6 +128,29 @@ TEST(DlLayering, JointsSpanTheirBedExactlyAndFsiIsMet) {
   EXPECT_NEAR(ratio_sum / beds, 1.0, 0.02);
   // Neighbouring joints 0.54 m apart in the thinnest possible bed (0.7/1.3).
   EXPECT_NEAR(0.7 / 1.3, 0.538, 1e-3);
+}
+
+TEST(DlLayering, TopBedCutByTheDomainKeepsItsDrawnSpacing) {
+  // The bed the domain's top cuts continues beyond the model: its joints keep
+  // the spacing of the whole bed (drawn thickness / FSI), not of the sliver
+  // left inside the domain, which would crowd the top with tiny blocks.
+  const LayeringSpec spec = example_spec();
+  // Beds are stacked from the bottom with one stream, so a lower domain top
+  // gives the same beds below it: cut bed 10 at 30 % of its thickness.
+  const auto tall = stack_beds(spec, box(0, 0, 400, 100), 5);
+  const double height = tall[10].bottom + 0.3 * tall[10].thickness();
+  const Polygon2 domain = box(0, 0, 400, height);
+  std::vector<double> drawn;
+  const auto beds = stack_beds(spec, domain, 5, &drawn);
+  ASSERT_EQ(beds.size(), 11u);
+  const std::size_t top = beds.size() - 1;
+  EXPECT_NEAR(drawn[top], tall[10].thickness(), 1e-12);
+  const auto out = generate_layering(spec, domain, 5);
+  const auto& st = out.per_set[0][top];
+  ASSERT_GT(st.spacings.size(), 100u);
+  // Median of n uniform spacings on m(1 +- r): relative standard error r/sqrt(n).
+  const double rel_se = 0.5 / std::sqrt(static_cast<double>(st.spacings.size()));
+  EXPECT_NEAR(st.median_spacing() / (drawn[top] / 1.3), 1.0, 5 * rel_se);
 }
 
 TEST(DlLayering, DippingBedsInAPolygonKeepJointsInsideTheirBed) {

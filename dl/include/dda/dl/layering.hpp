@@ -72,7 +72,11 @@ double expected_bed_count(const LayeringSpec& spec, const Polygon2& domain);
 // highest; the last bed is cut by the domain and may be thinner than the
 // minimum. Thicknesses come from the stream derive_seed(seed, "layering.thickness").
 // target_fsi / realised_fsi are left 0 (generate_layering fills them).
-std::vector<Layer> stack_beds(const LayeringSpec& spec, const Polygon2& domain, std::uint64_t seed);
+// `drawn_thickness`, if given, receives each bed's drawn thickness: equal to
+// top - bottom except for the last bed, which the domain cuts. Joint spacing
+// follows from the drawn thickness, since the bed goes on beyond the model.
+std::vector<Layer> stack_beds(const LayeringSpec& spec, const Polygon2& domain, std::uint64_t seed,
+                              std::vector<double>* drawn_thickness = nullptr);
 
 // Expected number of layered joints for these beds (before clipping).
 double expected_layered_joints(const LayeringSpec& spec, const Polygon2& domain, const std::vector<Layer>& beds);
