@@ -83,20 +83,55 @@ double extent_along(const Polygon2& poly, const Vec2& dir) {
   return poly.empty() ? 0.0 : hi - lo;
 }
 
-double min_feret_width(const Polygon2& poly) {
-  // The minimum width of a polygon is attained perpendicular to an edge of
-  // its convex hull, and every hull edge joins two vertices, so testing the
-  // normal of every vertex pair is exact. O(n^3), affordable for blocks,
-  // which have tens of vertices at most.
-  const std::size_t n = poly.size();
-  double best = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = i + 1; j < n; ++j) {
-      const Vec2 e = poly[j] - poly[i];
-      if (e.squaredNorm() == 0) continue;
-      best = std::min(best, extent_along(poly, Vec2(-e.y(), e.x())));
-    }
-  return n < 3 ? 0.0 : best;
+Polygon2 convex_hull(Polygon2 pts) {
+  // Andrew's monotone chain.
+  std::sort(pts.begin(), pts.end(),
+            [](const Vec2& a, const Vec2& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); });
+  pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
+  if (pts.size() < 3) return pts;
+  Polygon2 hull(2 * pts.size());
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    while (k >= 2 && cross(hull[k - 1] - hull[k - 2], pts[i] - hull[k - 2]) <= 0) --k;
+    hull[k++] = pts[i];
+  }
+  for (std::size_t i = pts.size() - 1, t = k + 1; i > 0; --i) {
+    while (k >= t && cross(hull[k - 1] - hull[k - 2], pts[i - 1] - hull[k - 2]) <= 0) --k;
+    hull[k++] = pts[i - 1];
+  }
+  hull.resize(k - 1);
+  return hull;
 }
+
+FeretMeasures feret_measures(const Polygon2& poly) {
+  // The minimum width is attained perpendicular to a convex-hull edge, so
+  // scanning the hull edges is exact: O(h^2) on the hull.
+  FeretMeasures f;
+  const Polygon2 hull = convex_hull(poly);
+  const std::size_t h = hull.size();
+  for (std::size_t i = 0; i < h; ++i)
+    for (std::size_t j = i + 1; j < h; ++j) f.max_diameter = std::max(f.max_diameter, (hull[i] - hull[j]).norm());
+  if (h < 3) {
+    f.aspect = std::numeric_limits<double>::infinity();
+    return f;
+  }
+  f.min_width = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < h; ++i) {
+    const Vec2 e = hull[(i + 1) % h] - hull[i];
+    const double w = extent_along(hull, Vec2(-e.y(), e.x()));
+    const double len = extent_along(hull, e);
+    // On ties (a square, a regular polygon) keep the longer perpendicular
+    // length, so the result does not depend on where the hull starts.
+    const double tol = 1e-12 * std::max(1.0, w);
+    if (w < f.min_width - tol || (w <= f.min_width + tol && len > f.length)) {
+      f.min_width = std::min(w, f.min_width);
+      f.length = len;
+    }
+  }
+  f.aspect = f.min_width > 0 ? f.length / f.min_width : std::numeric_limits<double>::infinity();
+  return f;
+}
+
+double min_feret_width(const Polygon2& poly) { return feret_measures(poly).min_width; }
 
 }  // namespace dda

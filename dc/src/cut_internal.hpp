@@ -146,7 +146,7 @@ BlockBuild build_blocks(const ArrangementResult& ar, const std::vector<Layer>& l
 struct ShapeMeasures {
   double max_feret = 0;   // largest distance between two vertices
   double min_feret = 0;   // smallest caliper width (over convex-hull edges)
-  double aspect = 0;      // max_feret / min_feret (infinity if min_feret == 0)
+  double aspect = 0;      // dda::FeretMeasures::aspect: length across / min_feret
 };
 ShapeMeasures shape_measures(const Polygon2& poly);
 bool is_sliver(double area, double aspect, const SliverFilter& f);

@@ -1,9 +1,7 @@
 // Shape measures of a block and the simple-polygon check on doubles.
 //
-// Sliver aspect ratio (documented convention): max Feret diameter (largest
-// distance between two vertices) divided by the min Feret width (smallest
-// caliper width, attained perpendicular to a convex-hull edge). A square has
-// sqrt(2), a 10 x 1 rectangle 10.05, a needle tends to infinity.
+// Sliver aspect ratio: dda::feret_measures (common/geometry.hpp), the same
+// elongation the block statistics report: an L x W rectangle has L/W.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -14,27 +12,6 @@ namespace dda::dc::detail {
 namespace {
 
 double orient(const Vec2& a, const Vec2& b, const Vec2& c) { return cross(b - a, c - a); }
-
-// Andrew's monotone chain; returns the hull CCW without collinear points.
-Polygon2 convex_hull(Polygon2 pts) {
-  std::sort(pts.begin(), pts.end(), [](const Vec2& a, const Vec2& b) {
-    return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
-  });
-  pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
-  if (pts.size() < 3) return pts;
-  Polygon2 hull(2 * pts.size());
-  std::size_t k = 0;
-  for (std::size_t i = 0; i < pts.size(); ++i) {
-    while (k >= 2 && orient(hull[k - 2], hull[k - 1], pts[i]) <= 0) --k;
-    hull[k++] = pts[i];
-  }
-  for (std::size_t i = pts.size() - 1, t = k + 1; i > 0; --i) {
-    while (k >= t && orient(hull[k - 2], hull[k - 1], pts[i - 1]) <= 0) --k;
-    hull[k++] = pts[i - 1];
-  }
-  hull.resize(k - 1);
-  return hull;
-}
 
 bool on_segment(const Vec2& a, const Vec2& b, const Vec2& p) {
   return std::min(a.x(), b.x()) <= p.x() && p.x() <= std::max(a.x(), b.x()) &&
@@ -56,26 +33,8 @@ bool segments_meet(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
 }  // namespace
 
 ShapeMeasures shape_measures(const Polygon2& poly) {
-  ShapeMeasures m;
-  const Polygon2 hull = convex_hull(poly);
-  const std::size_t h = hull.size();
-  for (std::size_t i = 0; i < h; ++i)
-    for (std::size_t j = i + 1; j < h; ++j) m.max_feret = std::max(m.max_feret, (hull[i] - hull[j]).norm());
-  if (h < 3) {
-    m.min_feret = 0;
-  } else {
-    m.min_feret = std::numeric_limits<double>::infinity();
-    for (std::size_t i = 0; i < h; ++i) {
-      const Vec2 e = hull[(i + 1) % h] - hull[i];
-      const double len = e.norm();
-      if (len == 0) continue;
-      double w = 0;
-      for (const Vec2& p : hull) w = std::max(w, std::abs(cross(e, p - hull[i])) / len);
-      m.min_feret = std::min(m.min_feret, w);
-    }
-  }
-  m.aspect = m.min_feret > 0 ? m.max_feret / m.min_feret : std::numeric_limits<double>::infinity();
-  return m;
+  const FeretMeasures f = feret_measures(poly);
+  return {f.max_diameter, f.min_width, f.aspect};
 }
 
 bool is_sliver(double area, double aspect, const SliverFilter& f) {

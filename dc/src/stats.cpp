@@ -75,56 +75,6 @@ json distribution(std::vector<double> v, int bins) {
               {"histogram", histogram(v, bins)}};
 }
 
-// Convex hull (Andrew's monotone chain), counter-clockwise, no collinear
-// points.
-Polygon2 convex_hull(Polygon2 pts) {
-  std::sort(pts.begin(), pts.end(), [](const Vec2& a, const Vec2& b) {
-    return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
-  });
-  pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
-  if (pts.size() < 3) return pts;
-  Polygon2 hull(2 * pts.size());
-  std::size_t k = 0;
-  for (std::size_t i = 0; i < pts.size(); ++i) {
-    while (k >= 2 && cross(hull[k - 1] - hull[k - 2], pts[i] - hull[k - 2]) <= 0) --k;
-    hull[k++] = pts[i];
-  }
-  for (std::size_t i = pts.size() - 1, t = k + 1; i-- > 0;) {
-    while (k >= t && cross(hull[k - 1] - hull[k - 2], pts[i] - hull[k - 2]) <= 0) --k;
-    hull[k++] = pts[i];
-  }
-  hull.resize(k - 1);
-  return hull;
-}
-
-struct Feret {
-  double min_width = 0;  // minimum Feret diameter (caliper width)
-  double length = 0;     // caliper width perpendicular to the minimum one
-};
-
-// The minimum width of a polygon is attained perpendicular to an edge of its
-// convex hull; the same number as dda::min_feret_width, in O(h^2) on the hull
-// instead of O(n^3) on all vertices.
-Feret feret_of(const Polygon2& poly) {
-  const Polygon2 hull = convex_hull(poly);
-  Feret f;
-  if (hull.size() < 3) return f;
-  f.min_width = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < hull.size(); ++i) {
-    const Vec2 e = hull[(i + 1) % hull.size()] - hull[i];
-    const double w = extent_along(hull, Vec2(-e.y(), e.x()));
-    const double len = extent_along(hull, e);
-    // On ties (a square, a regular polygon) keep the longer perpendicular
-    // length, so the result does not depend on where the hull starts.
-    const double tol = 1e-12 * std::max(1.0, w);
-    if (w < f.min_width - tol || (w <= f.min_width + tol && len > f.length)) {
-      f.min_width = std::min(w, f.min_width);
-      f.length = len;
-    }
-  }
-  return f;
-}
-
 const char* const kDefinitions[][2] = {
     {"blocks", "number of blocks"},
     {"total_area", "sum of the block areas, m^2"},
@@ -165,9 +115,9 @@ nlohmann::json block_statistics(const BlockModel& model, int bins) {
     area.push_back(b.area);
     total += b.area;
     width.push_back(extent_along(b.vertices, bedding));
-    const Feret f = feret_of(b.vertices);
+    const FeretMeasures f = feret_measures(b.vertices);
     min_feret.push_back(f.min_width);
-    if (f.min_width > 0) aspect.push_back(f.length / f.min_width);
+    if (f.min_width > 0) aspect.push_back(f.aspect);
   }
 
   json j;

@@ -45,9 +45,24 @@ Box2 bounding_box(const Polygon2& poly);
 bool point_in_polygon(const Polygon2& poly, const Vec2& p);
 // Reverses the vertex order if the polygon is clockwise.
 void make_counter_clockwise(Polygon2& poly);
-// Width of the polygon in the direction perpendicular to `dir` and the
-// minimum such width over all edge directions (the minimum Feret diameter).
+// Extent of the polygon along `dir` (the caliper width across the direction
+// perpendicular to it).
 double extent_along(const Polygon2& poly, const Vec2& dir);
+
+// Convex hull, counter-clockwise, without collinear points.
+Polygon2 convex_hull(Polygon2 points);
+
+// Caliper (Feret) measures of a block, on its convex hull. The one
+// definition of a block's elongation used by DC's sliver filter and by the
+// block statistics: aspect = length / min_width, so an L x W rectangle has
+// aspect L/W in any orientation and a square 1.
+struct FeretMeasures {
+  double min_width = 0;     // smallest caliper width (minimum Feret diameter)
+  double length = 0;        // caliper width perpendicular to the minimum one
+  double max_diameter = 0;  // largest distance between two vertices
+  double aspect = 0;        // length / min_width (infinity for a degenerate polygon)
+};
+FeretMeasures feret_measures(const Polygon2& poly);
 double min_feret_width(const Polygon2& poly);
 
 }  // namespace dda
