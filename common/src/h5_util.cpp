@@ -1,4 +1,4 @@
-#include "h5_util.hpp"
+#include "dda/common/h5_util.hpp"
 
 #include <filesystem>
 #include <fstream>

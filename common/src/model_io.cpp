@@ -10,7 +10,7 @@
 
 #include "dda/common/atomic_file.hpp"
 #include "dda/common/error.hpp"
-#include "h5_util.hpp"
+#include "dda/common/h5_util.hpp"
 
 namespace dda {
 namespace {

@@ -5,17 +5,15 @@
 
 #include <charconv>
 #include <cstdint>
-#include <type_traits>
 #include <string>
 #include <vector>
 
 #include "dda/common/atomic_file.hpp"
+#include "dda/common/vtu_writer.hpp"
 
 namespace dda {
 namespace {
 
-constexpr int kVtkLine = 3;
-constexpr int kVtkPolygon = 7;
 // Line kinds in the .vtu beyond LineKind (0 joint, 1 bedding): the outlines.
 constexpr int kKindDomainOutline = 2;
 constexpr int kKindExcavationOutline = 3;
@@ -36,90 +34,17 @@ std::string xml_escape(const std::string& s) {
   return out;
 }
 
-// Shortest text that reads back to the same double.
+// Shortest text that reads back to the same double (the .pvd time stamps).
 void put(std::string& out, double v) {
   char buf[32];
   auto r = std::to_chars(buf, buf + sizeof buf, v);
   out.append(buf, r.ptr);
 }
-void put(std::string& out, long long v) {
-  char buf[24];
-  auto r = std::to_chars(buf, buf + sizeof buf, v);
-  out.append(buf, r.ptr);
-}
-
-// Writes values, a fixed number per text line so the file stays readable.
-template <class T>
-void data_array(std::string& out, const char* type, const char* name, int components,
-                const std::vector<T>& values) {
-  out += "        <DataArray type=\"";
-  out += type;
-  out += "\"";
-  if (name) {
-    out += " Name=\"";
-    out += name;
-    out += "\"";
-  }
-  if (components > 1) out += " NumberOfComponents=\"" + std::to_string(components) + "\"";
-  out += " format=\"ascii\">\n";
-  const std::size_t per_line = components > 1 ? static_cast<std::size_t>(components) * 4 : 12;
-  for (std::size_t i = 0; i < values.size(); ++i) {
-    out += (i % per_line == 0) ? "          " : " ";
-    if constexpr (std::is_floating_point_v<T>)
-      put(out, static_cast<double>(values[i]));
-    else
-      put(out, static_cast<long long>(values[i]));
-    if (i % per_line == per_line - 1 || i + 1 == values.size()) out += '\n';
-  }
-  out += "        </DataArray>\n";
-}
-
-struct Grid {
-  std::vector<double> points;             // x y z per point
-  std::vector<std::int64_t> connectivity;
-  std::vector<std::int64_t> offsets;      // end of each cell in connectivity
-  std::vector<std::uint8_t> types;
-  std::size_t num_points() const { return points.size() / 3; }
-  void add_point(const Vec2& p) { points.insert(points.end(), {p.x(), p.y(), 0.0}); }
-  // A cell over the last `n` points added.
-  void add_cell(std::size_t n, int type) {
-    const std::int64_t first = static_cast<std::int64_t>(num_points() - n);
-    for (std::size_t k = 0; k < n; ++k) connectivity.push_back(first + static_cast<std::int64_t>(k));
-    offsets.push_back(static_cast<std::int64_t>(connectivity.size()));
-    types.push_back(static_cast<std::uint8_t>(type));
-  }
-};
-
-std::string begin_file(const Grid& g) {
-  std::string out;
-  out.reserve(64 * g.points.size() + 256);
-  out += "<?xml version=\"1.0\"?>\n";
-  out += "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
-         "header_type=\"UInt64\">\n";
-  out += "  <UnstructuredGrid>\n";
-  out += "    <Piece NumberOfPoints=\"" + std::to_string(g.num_points()) + "\" NumberOfCells=\"" +
-         std::to_string(g.types.size()) + "\">\n";
-  out += "      <Points>\n";
-  data_array(out, "Float64", "Points", 3, g.points);
-  out += "      </Points>\n";
-  out += "      <Cells>\n";
-  data_array(out, "Int64", "connectivity", 1, g.connectivity);
-  data_array(out, "Int64", "offsets", 1, g.offsets);
-  data_array(out, "UInt8", "types", 1, g.types);
-  out += "      </Cells>\n";
-  return out;
-}
-
-void end_file(std::string& out) {
-  out += "    </Piece>\n";
-  out += "  </UnstructuredGrid>\n";
-  out += "</VTKFile>\n";
-}
 
 }  // namespace
 
 void write_lines_vtu(const std::string& path, const LineModel& model) {
-  Grid g;
+  VtuGrid g;
   std::vector<std::int32_t> set, kind, layer;
   for (const JointLine& l : model.lines) {
     g.add_point(l.a);
@@ -145,18 +70,14 @@ void write_lines_vtu(const std::string& path, const LineModel& model) {
   if (model.domain.size() >= 2) outline(model.domain, kBoundarySet, kKindDomainOutline);
   for (const Polygon2& e : model.excavations) outline(e, kExcavationSet, kKindExcavationOutline);
 
-  std::string out = begin_file(g);
-  out += "      <CellData Scalars=\"set\">\n";
-  data_array(out, "Int32", "set", 1, set);
-  data_array(out, "Int32", "kind", 1, kind);
-  data_array(out, "Int32", "layer", 1, layer);
-  out += "      </CellData>\n";
-  end_file(out);
-  write_text_atomically(path, out);
+  g.cell_data("set", 1, std::move(set));
+  g.cell_data("kind", 1, std::move(kind));
+  g.cell_data("layer", 1, std::move(layer));
+  g.write(path);
 }
 
 void write_blocks_vtu(const std::string& path, const BlockModel& model) {
-  Grid g;
+  VtuGrid g;
   std::vector<std::int64_t> id;
   std::vector<double> area;
   std::vector<std::int32_t> layer;
@@ -168,14 +89,10 @@ void write_blocks_vtu(const std::string& path, const BlockModel& model) {
     area.push_back(b.area);
     layer.push_back(b.layer);
   }
-  std::string out = begin_file(g);
-  out += "      <CellData Scalars=\"block_id\">\n";
-  data_array(out, "Int64", "block_id", 1, id);
-  data_array(out, "Float64", "area", 1, area);
-  data_array(out, "Int32", "layer", 1, layer);
-  out += "      </CellData>\n";
-  end_file(out);
-  write_text_atomically(path, out);
+  g.cell_data("block_id", 1, std::move(id));
+  g.cell_data("area", 1, std::move(area));
+  g.cell_data("layer", 1, std::move(layer));
+  g.write(path);
 }
 
 void write_pvd(const std::string& path, const std::vector<PvdEntry>& entries) {

@@ -1,8 +1,10 @@
 #pragma once
-// Private helpers over the HDF5 C API for model_io.cpp: handles that close
-// themselves, and a writer and a reader that turn every HDF5 failure into one
-// InputError sentence naming the file (HDF5's own error stack printing is
-// switched off).
+// Includes <hdf5.h>: a library using this header links hdf5::hdf5 itself
+// (PRIVATE), so HDF5 stays out of the public interface of dda_common.
+// Helpers over the HDF5 C API for the project's own files (lines, blocks,
+// results, checkpoints): handles that close themselves, and a writer and a
+// reader that turn every HDF5 failure into one InputError sentence naming
+// the file (HDF5's own error stack printing is switched off).
 #include <hdf5.h>
 
 #include <cstdint>
