@@ -62,4 +62,11 @@ Vec2 move_point(const Vec2& centroid, const Vector6d& d, const Vec2& p) {
   return centroid + Vec2(d[0], d[1]) + rotated + strained;
 }
 
+Vector3d rotate_stress(const Vector3d& s, double angle) {
+  const double c = std::cos(angle), n = std::sin(angle);
+  const double cc = c * c, nn = n * n, cn = c * n;
+  return {cc * s[0] + nn * s[1] - 2 * cn * s[2], nn * s[0] + cc * s[1] + 2 * cn * s[2],
+          cn * (s[0] - s[1]) + (cc - nn) * s[2]};
+}
+
 }  // namespace dda::df

@@ -1,69 +1,366 @@
-// 6x6 block storage of K and its compressed-column form.
+// 6x6 block storage of K: declared pattern, parallel rounds, compressed-column form.
 #include "dda/df/block_system.hpp"
 
 #include <algorithm>
+#include <atomic>
+#include <bit>
+#include <exception>
 
 namespace dda::df {
+namespace {
+
+std::uint64_t next_pattern_id() {
+  static std::atomic<std::uint64_t> counter{0};
+  return ++counter;
+}
+
+int grain = 1000;
+
+}  // namespace
+
+int parallel_grain() { return grain; }
+void set_parallel_grain(int blocks) { grain = std::max(1, blocks); }
 
 BlockSystem::BlockSystem(int blocks) { reset(blocks); }
 
 void BlockSystem::reset(int blocks) {
+  if (blocks != this->blocks()) sticky_.clear();
   diag_.assign(blocks, Matrix6d::Zero());
-  off_.clear();
   rhs_ = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(kDofs) * blocks);
+  extra_.clear();
+  items_.clear();
+  round_start_.assign(1, 0);
+  round_item_.clear();
+  tail_.clear();
+  part_start_.assign(kParts + 1, 0);
+  part_item_.clear();
+  build_pattern(sticky_);
+}
+
+void BlockSystem::reset(int blocks, const std::vector<std::pair<int, int>>& items) {
+  const bool same_size = blocks == this->blocks();
+  if (!same_size) sticky_.clear();
+  if (same_size) {
+    std::fill(diag_.begin(), diag_.end(), Matrix6d::Zero());
+    rhs_.setZero();
+  } else {
+    diag_.assign(blocks, Matrix6d::Zero());
+    rhs_ = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(kDofs) * blocks);
+  }
+  // Couplings that went outside the pattern last time become part of it.
+  merge_extra();
+  if (same_size && items == items_) {
+    std::fill(off_.begin(), off_.end(), Matrix6d::Zero());
+    return;
+  }
+  items_ = items;
+  std::vector<std::pair<int, int>> pairs;
+  pairs.reserve(items.size() + sticky_.size());
+  for (const auto& [a, b] : items)
+    if (a >= 0 && b >= 0 && a != b) pairs.emplace_back(std::max(a, b), std::min(a, b));
+  pairs.insert(pairs.end(), sticky_.begin(), sticky_.end());
+  build_pattern(std::move(pairs));
+  build_rounds();
+}
+
+void BlockSystem::build_pattern(std::vector<std::pair<int, int>> pairs) {
+  // Sorted by column, then row.
+  std::sort(pairs.begin(), pairs.end(), [](const auto& x, const auto& y) {
+    return x.second != y.second ? x.second < y.second : x.first < y.first;
+  });
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  const int nb = blocks();
+  std::vector<int> start(static_cast<std::size_t>(nb) + 1, 0);
+  for (const auto& p : pairs) ++start[p.second + 1];
+  for (int j = 0; j < nb; ++j) start[j + 1] += start[j];
+  std::vector<int> rows(pairs.size());
+  for (std::size_t s = 0; s < pairs.size(); ++s) rows[s] = pairs[s].first;
+  if (start != col_start_ || rows != col_row_ || pattern_id_ == 0) {
+    col_start_ = std::move(start);
+    col_row_ = std::move(rows);
+    pattern_id_ = next_pattern_id();
+    // Transposed index, rows in increasing column order.
+    row_start_.assign(static_cast<std::size_t>(nb) + 1, 0);
+    for (const int i : col_row_) ++row_start_[i + 1];
+    for (int i = 0; i < nb; ++i) row_start_[i + 1] += row_start_[i];
+    row_col_.resize(col_row_.size());
+    row_slot_.resize(col_row_.size());
+    std::vector<int> fill(row_start_.begin(), row_start_.end() - 1);
+    for (int j = 0; j < nb; ++j)
+      for (int s = col_start_[j]; s < col_start_[j + 1]; ++s) {
+        const int at = fill[col_row_[s]]++;
+        row_col_[at] = j;
+        row_slot_[at] = s;
+      }
+  }
+  off_.assign(col_row_.size(), Matrix6d::Zero());
+}
+
+void BlockSystem::build_rounds() {
+  const int n = static_cast<int>(items_.size());
+  const int nb = blocks();
+  // 1. Items inside one range of blocks.
+  const int span = std::max(1, (nb + kParts - 1) / kParts);
+  auto part = [&](int k) {
+    const auto [a, b] = items_[k];
+    const bool va = a >= 0 && a < nb, vb = b >= 0 && b < nb;
+    if (!va || !vb) return va ? a / span : vb ? b / span : -1;
+    return a / span == b / span ? a / span : -1;
+  };
+  part_start_.assign(kParts + 1, 0);
+  for (int k = 0; k < n; ++k)
+    if (const int p = part(k); p >= 0) ++part_start_[p + 1];
+  for (int p = 0; p < kParts; ++p) part_start_[p + 1] += part_start_[p];
+  part_item_.resize(static_cast<std::size_t>(part_start_[kParts]));
+  {
+    std::vector<int> fill(part_start_.begin(), part_start_.end() - 1);
+    for (int k = 0; k < n; ++k)
+      if (const int p = part(k); p >= 0) part_item_[fill[p]++] = k;
+  }
+  // 2. Greedy colouring of the others in item order: an item takes the
+  // lowest colour free at both of its blocks; 3. items that find none of the
+  // 64 run in the tail.
+  std::vector<std::uint64_t> used(diag_.size(), 0);
+  std::vector<int> colour(n, -1);
+  std::vector<int> count(65, 0);
+  tail_.clear();
+  for (int k = 0; k < n; ++k) {
+    const auto [a, b] = items_[k];
+    const bool va = a >= 0 && a < blocks(), vb = b >= 0 && b < blocks();
+    if (!va && !vb) {
+      tail_.push_back(k);
+      continue;
+    }
+    if (part(k) >= 0) continue;
+    const std::uint64_t taken = (va ? used[a] : 0) | (vb ? used[b] : 0);
+    if (taken == ~std::uint64_t{0}) {
+      tail_.push_back(k);
+      continue;
+    }
+    const int c = std::countr_one(taken);
+    colour[k] = c;
+    if (va) used[a] |= std::uint64_t{1} << c;
+    if (vb) used[b] |= std::uint64_t{1} << c;
+    ++count[c + 1];
+  }
+  int colours = 0;
+  for (int c = 0; c < 64; ++c)
+    if (count[c + 1] > 0) colours = c + 1;
+  round_start_.assign(static_cast<std::size_t>(colours) + 1, 0);
+  for (int c = 0; c < colours; ++c) round_start_[c + 1] = round_start_[c] + count[c + 1];
+  round_item_.resize(static_cast<std::size_t>(round_start_.back()));
+  std::vector<int> fill(round_start_.begin(), round_start_.end() - 1);
+  for (int k = 0; k < n; ++k)
+    if (colour[k] >= 0) round_item_[fill[colour[k]]++] = k;
+}
+
+void BlockSystem::scatter(const std::function<void(int)>& f) {
+  const int rounds_n = rounds();
+  std::exception_ptr error;
+  // Small loops are not worth waking the other threads for; the serial
+  // loops go through the items in the same order per block, so the result
+  // is the same.
+  const int small = 2 * grain;
+  if (part_start_.empty() || part_start_[kParts] < small) {
+    for (const int k : part_item_) f(k);
+  } else {
+#pragma omp parallel for schedule(dynamic, 1)
+    for (int p = 0; p < kParts; ++p) {
+      try {
+        for (int q = part_start_[p]; q < part_start_[p + 1]; ++q) f(part_item_[q]);
+      } catch (...) {
+#pragma omp critical(dda_df_scatter_error)
+        if (!error) error = std::current_exception();
+      }
+    }
+  }
+  if (error) std::rethrow_exception(error);
+  if (static_cast<int>(round_item_.size()) < small) {
+    for (const int k : round_item_) f(k);
+  } else {
+#pragma omp parallel
+    for (int r = 0; r < rounds_n; ++r) {
+      const int lo = round_start_[r], hi = round_start_[r + 1];
+      if (hi - lo < small) {
+#pragma omp single
+        for (int q = lo; q < hi; ++q) {
+          try {
+            f(round_item_[q]);
+          } catch (...) {
+            if (!error) error = std::current_exception();
+          }
+        }
+      } else {
+#pragma omp for schedule(static)
+        for (int q = lo; q < hi; ++q) {
+          try {
+            f(round_item_[q]);
+          } catch (...) {
+#pragma omp critical(dda_df_scatter_error)
+            if (!error) error = std::current_exception();
+          }
+        }
+      }
+    }
+  }
+  if (error) std::rethrow_exception(error);
+  for (const int k : tail_) f(k);
+}
+
+int BlockSystem::slot(int i, int j) const {
+  const auto first = col_row_.begin() + col_start_[j], last = col_row_.begin() + col_start_[j + 1];
+  const auto it = std::lower_bound(first, last, i);
+  return (it != last && *it == i) ? static_cast<int>(it - col_row_.begin()) : -1;
 }
 
 void BlockSystem::add_coupling(int i, int j, const Matrix6d& kij) {
   if (i > j) {
-    auto [it, fresh] = off_.try_emplace(key(i, j), kij);
-    if (!fresh) it->second += kij;
+    const int s = slot(i, j);
+    if (s >= 0) {
+      off_[s] += kij;
+    } else {
+      auto [it, fresh] = extra_.try_emplace(key(i, j), kij);
+      if (!fresh) it->second += kij;
+    }
   } else {
-    auto [it, fresh] = off_.try_emplace(key(j, i), kij.transpose());
-    if (!fresh) it->second += kij.transpose();
-  }
-}
-
-Eigen::SparseMatrix<double> BlockSystem::lower() const {
-  // Block column j holds the lower half of the diagonal block and the full
-  // blocks (i, j), i > j, in increasing i: the row indices of every column
-  // come out sorted, so the arrays are written directly.
-  const int nb = blocks();
-  std::vector<std::vector<std::pair<int, const Matrix6d*>>> cols(nb);
-  for (const auto& [k, m] : off_) cols[static_cast<int>(k & 0xffffffffu)].emplace_back(static_cast<int>(k >> 32), &m);
-  std::size_t nnz = static_cast<std::size_t>(nb) * 21;
-  for (auto& c : cols) {
-    std::sort(c.begin(), c.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
-    nnz += c.size() * 36;
-  }
-  const int n = kDofs * nb;
-  Eigen::SparseMatrix<double> a(n, n);
-  a.resizeNonZeros(static_cast<Eigen::Index>(nnz));
-  int* outer = a.outerIndexPtr();
-  int* inner = a.innerIndexPtr();
-  double* val = a.valuePtr();
-  int pos = 0;
-  for (int j = 0; j < nb; ++j) {
-    for (int c = 0; c < kDofs; ++c) {
-      outer[kDofs * j + c] = pos;
-      for (int r = c; r < kDofs; ++r, ++pos) {
-        inner[pos] = kDofs * j + r;
-        val[pos] = diag_[j](r, c);
-      }
-      for (const auto& [i, m] : cols[j])
-        for (int r = 0; r < kDofs; ++r, ++pos) {
-          inner[pos] = kDofs * i + r;
-          val[pos] = (*m)(r, c);
-        }
+    const int s = slot(j, i);
+    if (s >= 0) {
+      off_[s] += kij.transpose();
+    } else {
+      auto [it, fresh] = extra_.try_emplace(key(j, i), kij.transpose());
+      if (!fresh) it->second += kij.transpose();
     }
   }
-  outer[n] = pos;
-  return a;
 }
 
+void BlockSystem::merge_extra() const {
+  if (extra_.empty()) return;
+  // Rebuild the pattern with the extra pairs; keep the values already there.
+  std::vector<std::pair<int, int>> pairs;
+  pairs.reserve(col_row_.size() + extra_.size());
+  std::vector<Matrix6d> values;
+  values.reserve(col_row_.size() + extra_.size());
+  const int nb = blocks();
+  for (int j = 0; j < nb; ++j)
+    for (int s = col_start_[j]; s < col_start_[j + 1]; ++s) pairs.emplace_back(col_row_[s], j);
+  std::vector<Matrix6d> old = std::move(off_);
+  for (const auto& [k, m] : extra_) {
+    const std::pair<int, int> p(static_cast<int>(k >> 32), static_cast<int>(k & 0xffffffffu));
+    pairs.push_back(p);
+    sticky_.push_back(p);
+  }
+  std::sort(sticky_.begin(), sticky_.end());
+  sticky_.erase(std::unique(sticky_.begin(), sticky_.end()), sticky_.end());
+  auto* self = const_cast<BlockSystem*>(this);
+  const std::vector<int> old_start = col_start_, old_row = col_row_;
+  self->build_pattern(pairs);
+  for (int j = 0; j < nb; ++j)
+    for (int s = old_start[j]; s < old_start[j + 1]; ++s) off_[slot(old_row[s], j)] = old[s];
+  for (const auto& [k, m] : extra_) off_[slot(static_cast<int>(k >> 32), static_cast<int>(k & 0xffffffffu))] += m;
+  extra_.clear();
+}
+
+std::uint64_t BlockSystem::pattern_id() const {
+  merge_extra();
+  return pattern_id_;
+}
+
+const Eigen::SparseMatrix<double>& BlockSystem::csc() const {
+  merge_extra();
+  const int nb = blocks();
+  const int n = kDofs * nb;
+  if (csc_pattern_ != pattern_id_ || csc_.rows() != n) {
+    // Block column j: per column c the lower part of the diagonal block
+    // (rows c..5), then each coupled block (i, j), i > j, in increasing i;
+    // the row indices of every column come out sorted.
+    csc_pattern_ = pattern_id_;
+    csc_.resize(n, n);
+    const std::size_t nnz = static_cast<std::size_t>(nb) * 21 + col_row_.size() * 36;
+    csc_.resizeNonZeros(static_cast<Eigen::Index>(nnz));
+    csc_col_pos_.assign(static_cast<std::size_t>(nb) + 1, 0);
+    int* outer = csc_.outerIndexPtr();
+    int* inner = csc_.innerIndexPtr();
+    int pos = 0;
+    for (int j = 0; j < nb; ++j) {
+      csc_col_pos_[j] = pos;
+      for (int c = 0; c < kDofs; ++c) {
+        outer[kDofs * j + c] = pos;
+        for (int r = c; r < kDofs; ++r) inner[pos++] = kDofs * j + r;
+        for (int s = col_start_[j]; s < col_start_[j + 1]; ++s)
+          for (int r = 0; r < kDofs; ++r) inner[pos++] = kDofs * col_row_[s] + r;
+      }
+    }
+    outer[n] = pos;
+    csc_col_pos_[nb] = pos;
+  }
+  double* val = csc_.valuePtr();
+#pragma omp parallel for schedule(static) if (nb > grain)
+  for (int j = 0; j < nb; ++j) {
+    int pos = csc_col_pos_[j];
+    for (int c = 0; c < kDofs; ++c) {
+      for (int r = c; r < kDofs; ++r) val[pos++] = diag_[j](r, c);
+      for (int s = col_start_[j]; s < col_start_[j + 1]; ++s) {
+        const double* col = off_[s].data() + kDofs * c;  // column-major
+        for (int r = 0; r < kDofs; ++r) val[pos++] = col[r];
+      }
+    }
+  }
+  return csc_;
+}
+
+Eigen::SparseMatrix<double> BlockSystem::lower() const { return csc(); }
+
 Eigen::SparseMatrix<double> BlockSystem::full() const {
-  const Eigen::SparseMatrix<double> l = lower();
+  const Eigen::SparseMatrix<double>& l = csc();
   Eigen::SparseMatrix<double> f = l.selfadjointView<Eigen::Lower>();
   return f;
+}
+
+void BlockSystem::multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y, const Matrix6d* symmetric_diagonal) const {
+  merge_extra();
+  const int nb = blocks();
+  y.resize(static_cast<Eigen::Index>(kDofs) * nb);
+#pragma omp parallel for schedule(static) if (nb > grain)
+  for (int i = 0; i < nb; ++i) {
+    Vector6d acc;
+    if (symmetric_diagonal) {
+      acc.noalias() = symmetric_diagonal[i] * x.segment<kDofs>(kDofs * i);
+    } else {
+      const Matrix6d d = diag_[i].selfadjointView<Eigen::Lower>();
+      acc.noalias() = d * x.segment<kDofs>(kDofs * i);
+    }
+    for (int s = col_start_[i]; s < col_start_[i + 1]; ++s)
+      acc.noalias() += off_[s].transpose() * x.segment<kDofs>(kDofs * col_row_[s]);
+    for (int q = row_start_[i]; q < row_start_[i + 1]; ++q)
+      acc.noalias() += off_[row_slot_[q]] * x.segment<kDofs>(kDofs * row_col_[q]);
+    y.segment<kDofs>(kDofs * i) = acc;
+  }
+}
+
+BlockSystem BlockSystem::from_lower(const Eigen::SparseMatrix<double>& lower, const Eigen::VectorXd& rhs) {
+  const int nb = static_cast<int>(lower.cols() / kDofs);
+  std::vector<std::pair<int, int>> pairs;
+  for (int col = 0; col < lower.outerSize(); ++col)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(lower, col); it; ++it) {
+      const int i = static_cast<int>(it.row()) / kDofs, j = col / kDofs;
+      if (i > j && (pairs.empty() || pairs.back() != std::pair<int, int>(i, j))) pairs.emplace_back(i, j);
+    }
+  BlockSystem sys;
+  sys.reset(nb, pairs);
+  for (int col = 0; col < lower.outerSize(); ++col)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(lower, col); it; ++it) {
+      const int r = static_cast<int>(it.row());
+      const int i = r / kDofs, j = col / kDofs;
+      if (r < col) continue;  // upper part: ignored
+      if (i == j) {
+        sys.diag_[i](r % kDofs, col % kDofs) = it.value();
+        sys.diag_[i](col % kDofs, r % kDofs) = it.value();
+      } else {
+        sys.off_[sys.slot(i, j)](r % kDofs, col % kDofs) = it.value();
+      }
+    }
+  sys.rhs_ = rhs;
+  return sys;
 }
 
 }  // namespace dda::df

@@ -49,6 +49,12 @@ ContactGeometry contact_geometry(const Polygon2& vi, const Vec2& ci, const Polyg
   return g;
 }
 
+bool on_artificial_cut(const Block& vblock, int vertex, const Block& eblock, int edge) {
+  const int n = static_cast<int>(vblock.edge_set.size());
+  if (eblock.edge_set[edge] != kArtificialSet) return false;
+  return vblock.edge_set[vertex] == kArtificialSet || vblock.edge_set[(vertex + n - 1) % n] == kArtificialSet;
+}
+
 double tributary_length(const Polygon2& vi, int vertex, const Vec2& edge_tangent) {
   constexpr double kSinTol = 0.173648;  // sin(10 degrees)
   const int n = static_cast<int>(vi.size());
@@ -101,16 +107,33 @@ ContactState update_contact(Contact& c, const ContactLaw& law, double dt, const 
       old == ContactState::Sliding ? law.friction->strength(friction_input(c, dt), c.friction) : 0.0;
   c.friction_settled = true;
   auto lock = [&]() {
-    if (old != ContactState::Locked) {  // the shear spring starts from P's position at the step start
+    if (old == ContactState::Open) {  // a fresh contact: the shear spring starts unloaded at P
       c.ref_ratio = g.ratio0;
       g.ds0 = 0;
       g.gs = g.gc;
+    } else if (old == ContactState::Sliding) {
+      // A sliding contact that sticks keeps the friction force it carried:
+      // the spring starts stretched by F / ps (elastic-plastic shear spring),
+      // so the shear force is continuous. Restarting it unloaded dropped the
+      // friction to nothing for the steps the spring took to reload, which
+      // with soft penalties and short steps fed the rocking mode (V1 at
+      // E = 1 GPa, dt = 0.2 ms overshot by 12 %).
+      g.ds0 = c.slip_sign * friction_used / law.ps;
+      c.ref_ratio = g.ratio0 - g.ds0 / g.length;
+      g.gs = g.gc;  // the reference moved by F/ps, far below the step's size
     }
     return ContactState::Locked;
   };
   c.broke = false;
   c.shear_force = 0;
   c.slip_velocity = 0;
+
+  if (c.glued) {  // never opens, never slides: both springs stay on
+    c.normal_force = -law.pn * dn;
+    c.shear_force = -law.ps * (g.ds0 + g.es.dot(di) + g.gs.dot(dj));
+    if (old != ContactState::Locked) lock();
+    return ContactState::Locked;
+  }
 
   if (old == ContactState::Open) {
     if (dn < 0) {

@@ -1,10 +1,13 @@
 // Narrow phase: vertex-edge contacts and the entrance-edge rule.
 #include "dda/df/contact_detection.hpp"
+#include "dda/df/block_system.hpp"
+
+#include <omp.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <set>
+#include <limits>
 #include <tuple>
 
 namespace dda::df {
@@ -63,6 +66,25 @@ void resolve_vertex_vertex(const std::vector<Polygon2>& blocks, int i, int v, in
 
 }  // namespace
 
+int ContactIndex::exact(int vblock, int vertex, int eblock, int edge) const {
+  const Key lo{vblock, vertex, eblock, edge, -1};
+  auto it = std::lower_bound(keys_.begin(), keys_.end(), lo);
+  int found = -1;
+  for (; it != keys_.end() && it->vblock == vblock && it->vertex == vertex && it->eblock == eblock && it->edge == edge;
+       ++it)
+    found = it->index;
+  return found;
+}
+
+int ContactIndex::by_vertex(int vblock, int vertex, int eblock) const {
+  const Key lo{vblock, vertex, eblock, std::numeric_limits<int>::min(), -1};
+  auto it = std::lower_bound(keys_.begin(), keys_.end(), lo);
+  int found = -1;
+  for (; it != keys_.end() && it->vblock == vblock && it->vertex == vertex && it->eblock == eblock; ++it)
+    found = std::max(found, it->index);
+  return found;
+}
+
 double signed_distance(const Vec2& p, const Vec2& a, const Vec2& b) {
   const Vec2 e = b - a;
   return cross(p - a, e) / e.norm();
@@ -71,40 +93,70 @@ double signed_distance(const Vec2& p, const Vec2& a, const Vec2& b) {
 std::vector<ContactCandidate> find_contacts(const std::vector<Polygon2>& blocks,
                                             const std::vector<std::pair<int, int>>& pairs, double search_distance,
                                             const std::function<bool(int, int, int)>& previous) {
+  // Pairs are independent (a vertex-vertex contact involves the two blocks
+  // of one pair only), so they are scanned in parallel into per-thread
+  // lists. Threads take contiguous ranges of pairs in order and the lists
+  // are joined in thread order, so the sort sees the same sequence (and
+  // leaves any equal keys in the same order) whatever the thread count.
+  // `previous` is only read.
   const double d0 = search_distance;
-  std::vector<ContactCandidate> out;
-  std::set<std::array<int, 4>> vertex_pairs;  // (lower block, its vertex, other block, its vertex)
+  const int npairs = static_cast<int>(pairs.size());
+  const int nblocks = static_cast<int>(blocks.size());
+  std::vector<Box2> boxes(blocks.size());
+#pragma omp parallel for schedule(static) if (nblocks > parallel_grain())
+  for (int b = 0; b < nblocks; ++b) boxes[b] = bounding_box(blocks[b]);
+  std::vector<std::vector<ContactCandidate>> found;
+#pragma omp parallel if (npairs > 2 * parallel_grain())
+  {
+#pragma omp single
+    found.resize(static_cast<std::size_t>(omp_get_num_threads()));
+    std::vector<ContactCandidate>& out = found[static_cast<std::size_t>(omp_get_thread_num())];
+    std::vector<std::array<int, 4>> vertex_pairs;  // (lower block, its vertex, other block, its vertex)
 
-  auto scan = [&](int i, int j) {  // vertices of i against edges of j
-    const Polygon2& pi = blocks[i];
-    const Polygon2& pj = blocks[j];
-    const int ni = static_cast<int>(pi.size()), nj = static_cast<int>(pj.size());
-    for (int v = 0; v < ni; ++v) {
-      const Vec2& p = pi[v];
-      for (int k = 0; k < nj; ++k) {
-        const Vec2& a = pj[k];
-        const Vec2& b = pj[next_index(nj, k)];
-        const Vec2 e = b - a;
-        const double l2 = e.squaredNorm();
-        if (l2 == 0) continue;
-        const double t = std::clamp((p - a).dot(e) / l2, 0.0, 1.0);
-        if ((a + t * e - p).norm() > d0) continue;
-        const double da = (p - a).norm(), db = (p - b).norm();
-        if (std::min(da, db) < d0) {
-          const int w = da <= db ? k : next_index(nj, k);
-          vertex_pairs.insert(i < j ? std::array<int, 4>{i, v, j, w} : std::array<int, 4>{j, w, i, v});
+    auto scan = [&](int i, int j) {  // vertices of i against edges of j
+      const Polygon2& pi = blocks[i];
+      const Polygon2& pj = blocks[j];
+      const int ni = static_cast<int>(pi.size()), nj = static_cast<int>(pj.size());
+      const Box2& bj = boxes[j];
+      for (int v = 0; v < ni; ++v) {
+        const Vec2& p = pi[v];
+        // Farther than d0 from the box of j: from every edge of j too.
+        if (p.x() < bj.lo.x() - d0 || p.x() > bj.hi.x() + d0 || p.y() < bj.lo.y() - d0 || p.y() > bj.hi.y() + d0)
           continue;
+        for (int k = 0; k < nj; ++k) {
+          const Vec2& a = pj[k];
+          const Vec2& b = pj[next_index(nj, k)];
+          const Vec2 e = b - a;
+          const double l2 = e.squaredNorm();
+          if (l2 == 0) continue;
+          const double t = std::clamp((p - a).dot(e) / l2, 0.0, 1.0);
+          if ((a + t * e - p).norm() > d0) continue;
+          const double da = (p - a).norm(), db = (p - b).norm();
+          if (std::min(da, db) < d0) {
+            const int w = da <= db ? k : next_index(nj, k);
+            vertex_pairs.push_back(i < j ? std::array<int, 4>{i, v, j, w} : std::array<int, 4>{j, w, i, v});
+            continue;
+          }
+          if (admissible(pi, v, outward_normal(pj, k))) out.push_back(make(blocks, i, v, j, k, false));
         }
-        if (admissible(pi, v, outward_normal(pj, k))) out.push_back(make(blocks, i, v, j, k, false));
       }
+    };
+#pragma omp for schedule(static)
+    for (int q = 0; q < npairs; ++q) {
+      const auto [a, b] = pairs[q];
+      vertex_pairs.clear();
+      scan(a, b);
+      scan(b, a);
+      std::sort(vertex_pairs.begin(), vertex_pairs.end());
+      vertex_pairs.erase(std::unique(vertex_pairs.begin(), vertex_pairs.end()), vertex_pairs.end());
+      for (const auto& vp : vertex_pairs) resolve_vertex_vertex(blocks, vp[0], vp[1], vp[2], vp[3], d0, previous, out);
     }
-  };
-  for (const auto& [a, b] : pairs) {
-    scan(a, b);
-    scan(b, a);
   }
-  for (const auto& vp : vertex_pairs) resolve_vertex_vertex(blocks, vp[0], vp[1], vp[2], vp[3], d0, previous, out);
-
+  std::vector<ContactCandidate> out;
+  std::size_t total = 0;
+  for (const auto& f : found) total += f.size();
+  out.reserve(total);
+  for (const auto& f : found) out.insert(out.end(), f.begin(), f.end());
   std::sort(out.begin(), out.end(), [](const ContactCandidate& x, const ContactCandidate& y) {
     return std::tie(x.vblock, x.vertex, x.eblock, x.edge) < std::tie(y.vblock, y.vertex, y.eblock, y.edge);
   });

@@ -1,5 +1,6 @@
 // Coulomb-Mohr friction and the registry of friction laws.
 #include <cmath>
+#include <limits>
 
 #include "dda/common/error.hpp"
 #include "dda/df/friction.hpp"
@@ -14,6 +15,36 @@ double CoulombFriction::strength(const FrictionInput& in, const FrictionState& /
   // any, is handled by the tensile check before friction is asked.
   const double frictional = in.normal_force > 0 ? in.normal_force * tan_phi_ : 0.0;
   return frictional + (in.bonded ? cohesion_ * in.contact_length : 0.0);
+}
+
+std::vector<double> FrictionState::to_vector() const {
+  std::vector<double> v{theta, slip};
+  v.insert(v.end(), extra.begin(), extra.end());
+  return v;
+}
+
+FrictionState FrictionState::from_vector(const std::vector<double>& v) {
+  if (v.size() < 2) throw InputError("A saved friction state needs at least two numbers (theta, slip).");
+  FrictionState s;
+  s.theta = v[0];
+  s.slip = v[1];
+  s.extra.assign(v.begin() + 2, v.end());
+  return s;
+}
+
+namespace {
+class StuckFriction final : public FrictionLaw {
+ public:
+  std::string name() const override { return "stuck"; }
+  double strength(const FrictionInput& /*in*/, const FrictionState& /*state*/) const override {
+    return std::numeric_limits<double>::max();
+  }
+};
+}  // namespace
+
+const FrictionLaw* stuck_friction() {
+  static const StuckFriction law;
+  return &law;
 }
 
 std::unique_ptr<FrictionLaw> make_friction_law(const JointProperties& joint) {

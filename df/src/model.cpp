@@ -83,6 +83,19 @@ void check_control(const Control& c) {
           "The smallest time-step ratio must lie in (0, 1].");
 }
 
+void check_history(const std::optional<TimeHistory>& h, const std::string& what) {
+  if (!h) return;
+  require(!h->t.empty(), what + " has an empty time history.");
+  require(h->t.size() == h->value.size(), what + " has a time history with " + std::to_string(h->t.size()) +
+                                              " times but " + std::to_string(h->value.size()) + " values.");
+  for (std::size_t k = 0; k < h->t.size(); ++k) {
+    require(std::isfinite(h->t[k]) && finite(h->value[k]),
+            what + " has a time history entry that is not a finite number (row " + std::to_string(k + 1) + ").");
+    require(k == 0 || h->t[k] > h->t[k - 1],
+            what + " has time history times that do not increase (row " + std::to_string(k + 1) + ").");
+  }
+}
+
 }  // namespace
 
 void add_points_from_block_model(const BlockModel& geometry, const std::map<std::string, Vec2>& load_forces,
@@ -159,12 +172,26 @@ Model build_model(ModelInput in) {
     require(!f.penalty || (std::isfinite(*f.penalty) && *f.penalty > 0),
             "Fixed point '" + f.name + "' has a non-positive penalty.");
     if (!f.penalty) f.penalty = in.control.fixed_penalty_factor * pn_default;
+    check_history(f.history, "Fixed point '" + f.name + "'");
     m.fixed_points.push_back(f);
   }
   for (PointLoad l : in.loads) {
     l.block = resolve_block(m.blocks, l.block, l.position, "Load point '" + l.name + "'");
     require(finite(l.force), "Load point '" + l.name + "' has a force that is not a finite number.");
+    check_history(l.history, "Load point '" + l.name + "'");
     m.loads.push_back(l);
+  }
+  for (Bolt b : in.bolts) {
+    const std::string w = "Bolt '" + b.name + "'";
+    b.anchor_block = resolve_block(m.blocks, b.anchor_block, b.anchor, w + " (anchor)");
+    b.head_block = resolve_block(m.blocks, b.head_block, b.head, w + " (head)");
+    require(b.anchor_block != b.head_block, w + " has both ends in block " + std::to_string(b.head_block) + ".");
+    require((b.head - b.anchor).norm() > 0, w + " has zero length.");
+    require(std::isfinite(b.stiffness) && b.stiffness > 0, w + " has a non-positive stiffness (" + num(b.stiffness) + " N/m).");
+    require(std::isfinite(b.pretension) && b.pretension >= 0, w + " has a negative pretension (" + num(b.pretension) + " N).");
+    require(!b.breaking_force || (std::isfinite(*b.breaking_force) && *b.breaking_force > 0),
+            w + " has a non-positive breaking force.");
+    m.bolts.push_back(b);
   }
   for (MeasurementPoint p : in.measurements) {
     p.block = resolve_block(m.blocks, p.block, p.position, "Measurement point '" + p.name + "'");
@@ -173,9 +200,12 @@ Model build_model(ModelInput in) {
 
   if (in.initial_velocity.empty()) in.initial_velocity.assign(nb, Vector6d::Zero());
   require(in.initial_velocity.size() == nb, "The initial velocity list must have one entry per block.");
+  for (const Vector6d& v : in.initial_velocity)
+    require(v.allFinite(), "An initial block velocity is not a finite number.");
   m.initial_velocity = in.initial_velocity;
   if (in.initial_stress.empty()) in.initial_stress.assign(nb, Vector3d::Zero());
   require(in.initial_stress.size() == nb, "The initial stress list must have one entry per block.");
+  for (const Vector3d& v : in.initial_stress) require(v.allFinite(), "An initial block stress is not a finite number.");
   m.initial_stress = in.initial_stress;
 
   // w0: half the model height unless given; it scales the displacement limit

@@ -16,6 +16,7 @@ namespace dda::df {
 
 Simulation::Simulation(Model model, std::unique_ptr<LinearSolver> solver)
     : model_(std::move(model)), solver_(std::move(solver)) {
+  if (!solver_) solver_ = make_solver(model_.control.solver);
   for (const JointProperties& j : model_.joints) friction_.push_back(make_friction_law(j));
   for (const Material& m : model_.materials) emat_.push_back(elastic_matrix(m));
   for (int i = 0; i < model_.block_count(); ++i) {
@@ -34,6 +35,7 @@ Simulation::Simulation(Model model, std::unique_ptr<LinearSolver> solver)
   dt_ = model_.control.dt;
   max_step_displacement_ = model_.control.max_displacement_ratio * *model_.control.w0;
   record_measurements();
+  init_physics();
 }
 
 const StepRecord& Simulation::step() { return advance(std::numeric_limits<double>::infinity()); }
@@ -55,7 +57,7 @@ void Simulation::run_until(double t) {
 
 ContactLaw Simulation::law_of(const Contact& c) const {
   return {model_.joint_pn[c.joint], model_.joint_ps[c.joint], model_.joints[c.joint].tensile_strength,
-          friction_[c.joint].get()};
+          settling_ ? stuck_friction() : friction_[c.joint].get()};
 }
 
 int Simulation::joint_of(int vblock, int vertex, int eblock, int edge) const {
@@ -81,19 +83,15 @@ void Simulation::detect_contacts() {
   }
   // Contacts of the last step by (vertex block, vertex, edge block[, edge]):
   // a vertex that slides onto the next edge of the same block keeps its state.
-  std::map<std::tuple<int, int, int, int>, int> exact;
-  std::map<std::tuple<int, int, int>, int> by_vertex;
-  for (int k = 0; k < static_cast<int>(contacts_.size()); ++k) {
-    const Contact& c = contacts_[k];
-    exact[{c.vblock, c.vertex, c.eblock, c.edge}] = k;
-    by_vertex[{c.vblock, c.vertex, c.eblock}] = k;
-  }
-  auto previous = [&by_vertex](int vb, int v, int eb) { return by_vertex.count({vb, v, eb}) > 0; };
+  const ContactIndex last(contacts_);
+  auto previous = [&last](int vb, int v, int eb) { return last.by_vertex(vb, v, eb) >= 0; };
   const auto candidates = find_contacts(polys, broad_phase(boxes, 0.5 * d0), d0, previous);
 
-  std::vector<Contact> next;
-  next.reserve(candidates.size());
-  for (const ContactCandidate& cand : candidates) {
+  // Each contact reads only the blocks and the last step: in parallel.
+  std::vector<Contact> next(candidates.size());
+#pragma omp parallel for schedule(static) if (nb > parallel_grain())
+  for (std::size_t k = 0; k < candidates.size(); ++k) {
+    const ContactCandidate& cand = candidates[k];
     Contact c;
     c.vblock = cand.vblock;
     c.vertex = cand.vertex;
@@ -101,23 +99,26 @@ void Simulation::detect_contacts() {
     c.edge = cand.edge;
     c.joint = joint_of(c.vblock, c.vertex, c.eblock, c.edge);
     bool keep_reference = false;
-    const auto ex = exact.find({c.vblock, c.vertex, c.eblock, c.edge});
-    const auto bv = by_vertex.find({c.vblock, c.vertex, c.eblock});
-    if (ex != exact.end() || bv != by_vertex.end()) {
-      const Contact& old = contacts_[ex != exact.end() ? ex->second : bv->second];
+    const int ex = last.exact(c.vblock, c.vertex, c.eblock, c.edge);
+    const int bv = ex >= 0 ? ex : last.by_vertex(c.vblock, c.vertex, c.eblock);
+    if (bv >= 0) {
+      const Contact& old = contacts_[bv];
       c.state = old.state;
       c.slip_sign = old.slip_sign;
       c.normal_force = old.normal_force;
       c.shear_force = old.shear_force;
       c.slip_velocity = old.slip_velocity;
       c.bonded = old.bonded;
+      c.glued = old.glued;
       c.friction = old.friction;
       c.ref_ratio = old.ref_ratio;
-      keep_reference = ex != exact.end() && old.state == ContactState::Locked;
+      keep_reference = ex >= 0 && old.state == ContactState::Locked;
     } else if (step_count_ == 0) {
       // Bonds exist only between faces in touch at the start.
       const JointProperties& j = model_.joints[c.joint];
-      c.bonded = (j.cohesion > 0 || j.tensile_strength > 0) && std::abs(cand.dn) <= 1e-3 * d0;
+      c.glued = on_artificial_cut(model_.blocks[c.vblock], c.vertex, model_.blocks[c.eblock], c.edge) &&
+                std::abs(cand.dn) <= 1e-3 * d0;
+      c.bonded = c.glued || ((j.cohesion > 0 || j.tensile_strength > 0) && std::abs(cand.dn) <= 1e-3 * d0);
       if (c.bonded) c.state = ContactState::Locked;
     }
     const BlockState& bi = blocks_[c.vblock];
@@ -130,13 +131,19 @@ void Simulation::detect_contacts() {
       c.geo.gs = c.geo.gc;
     }
     c.length = tributary_length(bi.vertices, c.vertex, c.geo.tangent);
-    next.push_back(std::move(c));
+    next[k] = std::move(c);
   }
   contacts_ = std::move(next);
 }
 
 void Simulation::assemble(double dt, const std::vector<Contact>& contacts) {
-  system_.reset(model_.block_count());
+  // Every contact's pair is declared (open ones too: the pattern then holds
+  // through the open-close iteration); see block_system.hpp for the rounds
+  // that keep the parallel sums in a fixed order.
+  std::vector<std::pair<int, int>> coupled(contacts.size());
+  for (std::size_t k = 0; k < contacts.size(); ++k) coupled[k] = {contacts[k].vblock, contacts[k].eblock};
+  system_.reset(model_.block_count(), coupled);
+#pragma omp parallel for schedule(static) if (model_.block_count() > parallel_grain())
   for (int i = 0; i < model_.block_count(); ++i) {
     const int m = model_.block_material[i];
     add_block_terms(i, blocks_[i], model_.materials[m], emat_[m], model_.gravity, dt, system_);
@@ -145,22 +152,33 @@ void Simulation::assemble(double dt, const std::vector<Contact>& contacts) {
     const FixedPoint& f = model_.fixed_points[k];
     // The spring pulls the point back to where it was fixed, so anchors do
     // not drift however many steps are taken.
-    add_point_spring(f.block, blocks_[f.block], fixed_pos_[k], fixed_anchor_[k] - fixed_pos_[k], *f.penalty,
-                     system_);
+    add_point_spring(f.block, blocks_[f.block], fixed_pos_[k],
+                     fixed_point_target(f, fixed_anchor_[k], time_ + dt) - fixed_pos_[k], *f.penalty, system_);
   }
   for (std::size_t k = 0; k < model_.loads.size(); ++k) {
     const PointLoad& l = model_.loads[k];
-    add_point_load(l.block, blocks_[l.block], load_pos_[k], l.force, system_);
+    add_point_load(l.block, blocks_[l.block], load_pos_[k], load_force(l, time_, time_ + dt), system_);
   }
-  for (const Contact& c : contacts) add_contact_terms(c, law_of(c), dt, system_);
+  assemble_physics(dt);
+  system_.scatter([&](int k) { add_contact_terms(contacts[k], law_of(contacts[k]), dt, system_); });
 }
 
 bool Simulation::open_close(double dt, std::vector<Contact>& contacts, Eigen::VectorXd& d, int& iterations) {
   for (iterations = 1; iterations <= model_.control.max_open_close; ++iterations) {
-    assemble(dt, contacts);
-    d = solver_->solve(system_.lower(), system_.rhs());
+    {
+      const ScopedTimer timer(timings_.assembly);
+      assemble(dt, contacts);
+    }
+    {
+      const ScopedTimer timer(timings_.solve);
+      d = solver_->solve_step(system_, dt);
+      ++timings_.solves;
+    }
     bool changed = false;
-    for (Contact& c : contacts) {
+    // Each contact updates only itself: in parallel (|| is order-free).
+#pragma omp parallel for schedule(static) reduction(|| : changed) if (model_.block_count() > parallel_grain())
+    for (std::size_t k = 0; k < contacts.size(); ++k) {
+      Contact& c = contacts[k];
       const ContactState old = c.state;
       const int old_sign = c.slip_sign;
       c.state = update_contact(c, law_of(c), dt, d.segment<kDofs>(kDofs * c.vblock),
@@ -185,7 +203,12 @@ double Simulation::max_vertex_displacement(const Eigen::VectorXd& d) const {
 }
 
 const StepRecord& Simulation::advance(double max_dt) {
-  detect_contacts();
+  const ScopedTimer step_timer(timings_.total);
+  {
+    const ScopedTimer timer(timings_.contact_search);
+    if (!started_) settle();
+    detect_contacts();
+  }
   const std::vector<Contact> start = contacts_;
   const Control& ctl = model_.control;
   const double dt_min = ctl.min_dt_ratio * ctl.dt;
@@ -198,6 +221,7 @@ const StepRecord& Simulation::advance(double max_dt) {
     int iterations = 0;
     const bool settled = open_close(dt, work, d, iterations);
     const double moved = max_vertex_displacement(d);
+    check_runaway(d, moved, dt, dt <= dt_min * (1 + 1e-9));
     const bool too_far = moved > max_step_displacement_;
     if ((!settled || too_far) && dt > dt_min * (1 + 1e-9)) {
       // Redo with a smaller step: cut to what the displacement limit
@@ -220,6 +244,7 @@ const StepRecord& Simulation::advance(double max_dt) {
 }
 
 void Simulation::accept(double dt, const Eigen::VectorXd& d, std::vector<Contact>& contacts, StepRecord& rec) {
+  before_accept(dt, d, contacts);
   // Points ride with their blocks; move them before the centroids change.
   auto move = [&](int block, Vec2& p) {
     p = move_point(blocks_[block].geometry.centroid, d.segment<kDofs>(kDofs * block), p);
@@ -237,7 +262,7 @@ void Simulation::accept(double dt, const Eigen::VectorXd& d, std::vector<Contact
     kinetic += 0.5 * v1.dot(mass_matrix(b.geometry, model_.materials[mat].density) * v1);
     for (Vec2& v : b.vertices) v = move_point(b.geometry.centroid, di, v);
     b.geometry = block_geometry(b.vertices);
-    b.stress += emat_[mat] * di.tail<3>();
+    b.stress = rotate_stress(b.stress, di[2]) + emat_[mat] * di.tail<3>();
     elastic += 0.5 * b.geometry.area * b.stress.dot(emat_[mat].ldlt().solve(b.stress));
     b.velocity = model_.control.dynamic * v1;
     b.velocity_end = v1;
@@ -262,6 +287,7 @@ void Simulation::accept(double dt, const Eigen::VectorXd& d, std::vector<Contact
   rec.kinetic_energy = kinetic;
   rec.elastic_energy = elastic;
   record_measurements();
+  after_accept(dt);
 }
 
 void Simulation::record_measurements() {

@@ -37,4 +37,11 @@ Matrix3d elastic_matrix(const Material& m);
 // so a spinning block keeps its area; the strain part stays linear.
 Vec2 move_point(const Vec2& centroid, const Vector6d& d, const Vec2& p);
 
+// The stress tensor [sx, sy, txy] turned with its block by `angle` (rad,
+// counter-clockwise): sigma' = R sigma R^T. An accepted step turns the
+// accumulated stress by the step's rotation r0 before adding E * strain, so
+// a block that turns over carries its stress with it (a block loaded along
+// x and turned by 90 degrees is loaded along y).
+Vector3d rotate_stress(const Vector3d& stress, double angle);
+
 }  // namespace dda::df

@@ -47,6 +47,7 @@ struct Contact {
   double length = 0;             // m, joint length this contact stands for (cohesion, tension)
   bool bonded = false;           // intact cohesive/tensile bond; breaks once, for ever
   bool broke = false;            // set when the bond broke in the current iterate
+  bool glued = false;            // across one of DC's artificial cuts: locked for ever
   FrictionState friction;
   ContactGeometry geo;
 };
@@ -60,6 +61,15 @@ ContactGeometry contact_geometry(const Polygon2& vi, const Vec2& ci, const Polyg
 // that lies within 10 degrees of the contact edge (two vertices of a face lying
 // on an edge share the face between them); 0 for a corner against an edge.
 double tributary_length(const Polygon2& vi, int vertex, const Vec2& edge_tangent);
+
+// Glue of DC's artificial cuts (edge set kArtificialSet): a cut DC adds to
+// make a block simply connected splits one piece of rock in two blocks that
+// must behave as one. A contact is glued when its edge and one of the two
+// edges at its vertex are artificial (and, checked by the caller, it is
+// closed at the start). A glued contact is a bonded joint of unlimited
+// cohesion and tensile strength: it stays locked whatever its forces, so
+// the two blocks are tied by their normal and shear penalty springs.
+bool on_artificial_cut(const Block& vblock, int vertex, const Block& eblock, int edge);
 
 // Per-contact penalties and friction strength, as assembled.
 struct ContactLaw {

@@ -18,7 +18,9 @@
 // extreme point toward that edge (both edges at the vertex leave the edge's
 // line on the outside, within a few degrees); the entrance edge is the
 // admissible candidate with the largest dn (the separating-axis choice).
+#include <algorithm>
 #include <functional>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -31,6 +33,39 @@ struct ContactCandidate {
   int eblock = -1, edge = -1;    // block and edge index (vertex edge -> edge+1)
   double dn = 0;                 // signed normal distance at detection, m
   bool vertex_vertex = false;    // came from the angle-angle rule
+};
+
+// The contacts of the last step by (vblock, vertex, eblock[, edge]), for
+// carrying their states over: a flat sorted array (no sort when the contacts
+// come sorted, as detection leaves them) searched by bisection. Read-only
+// after construction, so threads may share it.
+class ContactIndex {
+ public:
+  ContactIndex() = default;
+  // C has int members vblock, vertex, eblock, edge (a Contact).
+  template <class C>
+  explicit ContactIndex(const std::vector<C>& contacts) {
+    keys_.reserve(contacts.size());
+    for (std::size_t k = 0; k < contacts.size(); ++k) {
+      const C& c = contacts[k];
+      keys_.push_back({c.vblock, c.vertex, c.eblock, c.edge, static_cast<int>(k)});
+    }
+    if (!std::is_sorted(keys_.begin(), keys_.end())) std::sort(keys_.begin(), keys_.end());
+  }
+  // Index of the contact with all four, or -1 (the last one if several).
+  int exact(int vblock, int vertex, int eblock, int edge) const;
+  // Index of a contact of that vertex against that block, or -1 (the last
+  // one in the original order if several).
+  int by_vertex(int vblock, int vertex, int eblock) const;
+
+ private:
+  struct Key {
+    int vblock, vertex, eblock, edge, index;
+    bool operator<(const Key& o) const {
+      return std::tie(vblock, vertex, eblock, edge, index) < std::tie(o.vblock, o.vertex, o.eblock, o.edge, o.index);
+    }
+  };
+  std::vector<Key> keys_;
 };
 
 // Signed normal distance of p from edge a -> b (CCW edge of its block).

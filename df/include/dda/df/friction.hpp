@@ -7,24 +7,37 @@
 // file with a FrictionLaw subclass and one line in make_friction_law().
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "dda/df/model.hpp"
 
 namespace dda::df {
 
-// What a law may depend on at one contact.
+// What a law may depend on at one contact. Inside the open-close iteration
+// normal_force and slip_velocity are those of the current iterate (the last
+// solve), so a velocity-dependent law is iterated to agreement with the
+// solution (the iteration goes on until the strength stops changing, see
+// update_contact); advance() gets the values of the accepted solution.
 struct FrictionInput {
   double normal_force = 0;     // N (compression positive), per unit thickness
-  double slip_velocity = 0;    // m/s, relative sliding speed at the contact
+  double slip_velocity = 0;    // m/s, |relative sliding speed| at the contact, current iterate
   double contact_length = 0;   // m, length of joint the contact stands for
   double dt = 0;               // s, current step
   bool bonded = false;         // cohesion counts only while the contact is intact
 };
 
-// Per-contact memory of a law (unused by Coulomb).
+// Per-contact memory of a law (unused by Coulomb), carried from step to step
+// with its contact (also when the vertex slides onto the next edge of the
+// same block). Its plain form, to_vector() / from_vector(), is what a
+// checkpoint stores: [theta, slip, extra...].
 struct FrictionState {
-  double theta = 0;            // state variable (rate and state)
-  double slip = 0;             // cumulative slip, m
+  double theta = 0;            // state variable (rate and state), s
+  double slip = 0;             // cumulative slip, m (updated by the solver while sliding)
+  std::vector<double> extra;   // further law-specific variables
+
+  std::vector<double> to_vector() const;
+  // Inverse of to_vector(); InputError for fewer than two numbers.
+  static FrictionState from_vector(const std::vector<double>& v);
 };
 
 class FrictionLaw {
@@ -51,5 +64,9 @@ class CoulombFriction final : public FrictionLaw {
 
 // The law named in the joint properties; InputError for an unknown name.
 std::unique_ptr<FrictionLaw> make_friction_law(const JointProperties& joint);
+
+// A law that never lets go (strength without limit): contacts stick while
+// the model settles into equilibrium (Control::initial_equilibrium).
+const FrictionLaw* stuck_friction();
 
 }  // namespace dda::df

@@ -36,20 +36,63 @@ struct JointProperties {
   std::string friction_law = "coulomb";  // name of the FrictionLaw (see friction.hpp)
 };
 
-// A point of a block held at its initial position by a penalty spring.
+// A piecewise-linear table of a 2D quantity against time: (t_k, x_k, y_k),
+// t strictly increasing. Before the first time it holds the first value,
+// after the last the last one (a load stays on, a moving point stops).
+// Implemented in df/src/time_history.cpp; build_model() checks it.
+struct TimeHistory {
+  std::vector<double> t;             // s, strictly increasing, at least one entry
+  std::vector<Vec2> value;           // one per time (N for loads, m for displacements)
+
+  Vec2 at(double time) const;        // linear interpolation
+  // Mean value over [t0, t1] (exact integral of the piecewise-linear table
+  // divided by t1 - t0); at(t0) when t1 <= t0.
+  Vec2 average(double t0, double t1) const;
+};
+
+// A point of a block held by a penalty spring at its initial position, or,
+// with a history, at initial position + u(t) (a moving fixed point: the
+// prescribed displacement table t, ux, uy; piecewise linear).
 struct FixedPoint {
   std::string name;
   Vec2 position{0, 0};
   int block = -1;                    // -1: the block containing `position`
   std::optional<double> penalty;     // N/m; default Control::fixed_penalty_factor * pn
+  std::optional<TimeHistory> history = std::nullopt;  // prescribed displacement u(t), m
 };
 
-// A constant force applied at a material point of a block (it moves with it).
+// A force applied at a material point of a block (it moves with it):
+// `force`, or, with a history, the table t, fx, fy (piecewise linear; each
+// step applies the table's mean over the step, so a ramp is integrated exactly).
 struct PointLoad {
   std::string name;
   Vec2 position{0, 0};
   Vec2 force{0, 0};                  // N per unit thickness
   int block = -1;
+  std::optional<TimeHistory> history = std::nullopt;  // force F(t), N; replaces `force`
+};
+
+// Where a fixed point's spring pulls it at time t: its initial position
+// `anchor`, plus u(t) for a moving one.
+Vec2 fixed_point_target(const FixedPoint& f, const Vec2& anchor, double t);
+// The force a load applies over the step [t0, t1] (its table's mean there).
+Vec2 load_force(const PointLoad& l, double t0, double t1);
+
+// A rock bolt: an elastic bar between a point of one block (the anchor) and
+// a point of another; both ends ride with their blocks. Its axial force,
+// tension positive, is T = pretension + stiffness * (L - L0), L the current
+// and L0 the initial length, acting along the current bolt direction (it
+// pushes back when compressed below L0 - pretension / stiffness). Once T
+// exceeds the breaking force the bolt breaks, for ever. See bolts.hpp.
+struct Bolt {
+  std::string name;
+  Vec2 anchor{0, 0};                 // end in `anchor_block`
+  Vec2 head{0, 0};                   // end in `head_block`
+  int anchor_block = -1;             // -1: the block containing the point
+  int head_block = -1;
+  double stiffness = 0;              // N/m per unit thickness, > 0
+  double pretension = 0;             // N, >= 0, the force at the initial length
+  std::optional<double> breaking_force;  // N; none: never breaks
 };
 
 // A material point whose history is recorded every step.
@@ -71,6 +114,15 @@ struct Control {
   double shear_ratio = 1.0;          // default ps = shear_ratio * pn
   double fixed_penalty_factor = 10;  // default fixed-point penalty = factor * pn
   double min_dt_ratio = 1e-3;        // dt is never cut below min_dt_ratio * dt
+  // Start from equilibrium: before the first step, the model is relaxed
+  // statically under its loads with every closed contact stuck (blocks in
+  // contact settle into their penalty springs and take their stresses;
+  // blocks touching nothing stay where they are), time stays 0, velocities
+  // are reset to the initial ones. Without it a block placed on a slope
+  // starts with no contact force and slides nearly freely while its normal
+  // force builds up, a speed error it keeps for ever (see settle.cpp).
+  bool initial_equilibrium = false;
+  std::string solver = "auto";       // "auto" | "cholmod" | "pcg" (see linear_solver.hpp)
 };
 
 struct ModelInput {
@@ -82,6 +134,7 @@ struct ModelInput {
   Vec2 gravity{0, -9.81};                   // m/s^2
   std::vector<FixedPoint> fixed_points;
   std::vector<PointLoad> loads;
+  std::vector<Bolt> bolts;
   std::vector<MeasurementPoint> measurements;
   std::vector<Vector6d> initial_velocity;   // empty, or one per block [u, v, r, ex, ey, gxy] rates
   std::vector<Vector3d> initial_stress;     // empty, or one per block [sx, sy, txy]
@@ -104,6 +157,7 @@ struct Model {
   Vec2 gravity{0, -9.81};
   std::vector<FixedPoint> fixed_points;     // block and penalty resolved
   std::vector<PointLoad> loads;             // block resolved
+  std::vector<Bolt> bolts;                  // blocks resolved
   std::vector<MeasurementPoint> measurements;
   std::vector<Vector6d> initial_velocity;   // one per block
   std::vector<Vector3d> initial_stress;     // one per block

@@ -7,19 +7,25 @@
 // until no state changes. A step that does not settle within
 // Control::max_open_close iterations, or moves a vertex further than
 // g2 * w0, is redone with a smaller dt; dt grows back by 10 % per easy step.
-// An accepted step moves the vertices (exact rotation), adds E * strain to
-// the block stresses and carries k * v1 as the next start velocity, with
-// v1 = 2 d / dt - v0 (constant acceleration within the step).
+// An accepted step moves the vertices (exact rotation), turns the block
+// stresses with the step's rotation and adds E * strain to them, and carries
+// k * v1 as the next start velocity, with v1 = 2 d / dt - v0 (constant
+// acceleration within the step). A step whose solution is not finite, or
+// moves a block beyond the model even at the smallest dt, throws
+// RunawayError (runaway.hpp).
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "dda/df/block_kinematics.hpp"
 #include "dda/df/block_system.hpp"
+#include "dda/df/bolts.hpp"
 #include "dda/df/contact.hpp"
+#include "dda/df/energy.hpp"
 #include "dda/df/friction.hpp"
 #include "dda/df/linear_solver.hpp"
 #include "dda/df/model.hpp"
+#include "dda/df/step_timings.hpp"
 
 namespace dda::df {
 
@@ -53,9 +59,36 @@ struct MeasurementSample {
   Vector3d stress = Vector3d::Zero();  // stress of the block it lies in
 };
 
+// Everything of a Simulation that changes as it runs: what a checkpoint
+// saves and restore() puts back. state() and restore() are defined in
+// df/src/checkpoint_state.cpp, the HDF5 form in df/src/checkpoint_h5.cpp.
+// Whoever adds a member to Simulation that evolves over the steps (a friction
+// or bolt state, an energy sum, a runaway counter, a solver warm start that
+// changes the result) must add it here, to state() and restore(), and to the
+// checkpoint reader and writer, or a resumed run will differ from an
+// uninterrupted one (tests/df/test_io_checkpoint.cpp checks that they agree).
+struct SimulationState {
+  double time = 0;
+  double dt = 0;                                  // the step the next attempt starts with
+  int step_count = 0;
+  std::vector<BlockState> blocks;
+  std::vector<Contact> contacts;                  // of the last accepted step
+  std::vector<Vec2> fixed_anchor, fixed_pos;      // one per fixed point
+  std::vector<Vec2> load_pos, measurement_pos;
+  std::vector<StepRecord> log;
+  std::vector<std::vector<MeasurementSample>> histories;
+  LinearSolver::WarmStart solver_warm_start;      // PCG's start vector (empty for direct solvers)
+  // Physics state (bolts.hpp, energy.hpp); not yet in the checkpoint files.
+  std::vector<BoltState> bolts;
+  std::vector<std::vector<BoltSample>> bolt_histories;
+  std::vector<EnergyRecord> energy_log;
+  bool started = false;                           // initial equilibrium done (or not asked for)
+};
+
 class Simulation {
  public:
-  explicit Simulation(Model model, std::unique_ptr<LinearSolver> solver = make_cholmod_solver());
+  // No solver given: make_solver(model.control.solver).
+  explicit Simulation(Model model, std::unique_ptr<LinearSolver> solver = nullptr);
 
   // One accepted step (internally possibly several attempts).
   const StepRecord& step();
@@ -75,6 +108,22 @@ class Simulation {
   // Current position of a measurement point.
   Vec2 measurement_position(int i) const { return measurement_pos_[i]; }
   const LinearSolver& solver() const { return *solver_; }
+  const StepTimings& timings() const { return timings_; }
+
+  // A copy of the evolving state, and its restoration into a Simulation made
+  // from the same Model (restore() checks the sizes; InputError if they do
+  // not match the model).
+  SimulationState state() const;
+  void restore(const SimulationState& s);
+
+  // Bolts (bolts.hpp): current state, and one history per bolt (sample 0 is
+  // the initial state, then one sample per accepted step).
+  const std::vector<BoltState>& bolts() const { return bolts_; }
+  const std::vector<std::vector<BoltSample>>& bolt_histories() const { return bolt_histories_; }
+  // Energy (energy.hpp): record 0 is the initial state, then one per step.
+  const std::vector<EnergyRecord>& energy_log() const { return energy_log_; }
+  // Settling iterations spent on Control::initial_equilibrium (settle.cpp).
+  int settle_iterations() const { return settle_iterations_; }
 
  private:
   const StepRecord& advance(double max_dt);
@@ -86,6 +135,14 @@ class Simulation {
   void record_measurements();
   ContactLaw law_of(const Contact& c) const;
   double max_vertex_displacement(const Eigen::VectorXd& d) const;
+  // Physics extensions, defined in simulation_physics.cpp, settle.cpp and
+  // runaway.cpp (owned with the physics files).
+  void init_physics();
+  void assemble_physics(double dt);
+  void before_accept(double dt, const Eigen::VectorXd& d, const std::vector<Contact>& contacts);
+  void after_accept(double dt);
+  void settle();
+  void check_runaway(const Eigen::VectorXd& d, double moved, double dt, bool at_min_dt) const;
 
   Model model_;
   std::unique_ptr<LinearSolver> solver_;
@@ -98,10 +155,18 @@ class Simulation {
   std::vector<StepRecord> log_;
   std::vector<std::vector<MeasurementSample>> histories_;
   BlockSystem system_;
+  StepTimings timings_;
   double time_ = 0;
   double dt_ = 0;
   double max_step_displacement_ = 0;                    // g2 * w0
   int step_count_ = 0;
+  std::vector<BoltState> bolts_;
+  std::vector<std::vector<BoltSample>> bolt_histories_;
+  std::vector<EnergyRecord> energy_log_;
+  EnergyRecord energy_start_;          // stored energy at t = 0 (in the stored fields)
+  bool started_ = false;               // settle() has run (or was not asked for)
+  bool settling_ = false;              // contacts stick while settling
+  int settle_iterations_ = 0;
 };
 
 }  // namespace dda::df

@@ -1,0 +1,207 @@
+// Forward-solver speed: `build/bench/bench_df`.
+//
+// Model: a running-bond brick wall (bricks 1 m x 0.5 m, every other row
+// shifted by half a brick) standing on a base block held by three fixed
+// points, under gravity, started at rest with the bricks exactly touching.
+// E = 5 GPa, density 2600, phi = 35 deg, dt = 1 ms, w0 = 1 m (so the search
+// distance is 25 mm). BM_BrickWall/<blocks>/<solver>: solver 0 = auto,
+// 1 = cholmod, 2 = pcg. Each benchmark iteration is one Simulation::step();
+// three steps are taken before timing starts (the first analyses and
+// factorisations are then out of the way, as in a long run).
+//
+// Counters: blocks, contacts, ms_per_step, steps_per_s, the share of the
+// step spent in contact search / assembly / linear solve (the rest is the
+// open-close state updates, the step bookkeeping and the block updates),
+// solves per step, PCG iterations per PCG solve, CHOLMOD analyses per step,
+// threads.
+//
+// `bench_df --blocks FILE.h5 [--dt S] [--steps N]` times the steps of a
+// blocks file instead (default dt 1 ms; fixed points of the file hold their
+// blocks; loads are ignored), on top of any benchmark flag.
+#include <benchmark/benchmark.h>
+#include <omp.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "dda/common/model_io.hpp"
+#include "dda/df/linear_solver.hpp"
+#include "dda/df/model.hpp"
+#include "dda/df/simulation.hpp"
+
+namespace {
+
+using dda::Vec2;
+using namespace dda::df;
+
+dda::Block make_block(const dda::Polygon2& vertices) {
+  dda::Block b;
+  b.vertices = vertices;
+  b.edge_set.assign(vertices.size(), 0);
+  const dda::PolygonMoments m = dda::polygon_moments(vertices);
+  b.area = m.area;
+  b.centroid = m.centroid;
+  b.sxx = m.sxx;
+  b.syy = m.syy;
+  b.sxy = m.sxy;
+  return b;
+}
+
+dda::Polygon2 rectangle(double x0, double y0, double w, double h) {
+  return {{x0, y0}, {x0 + w, y0}, {x0 + w, y0 + h}, {x0, y0 + h}};
+}
+
+ModelInput brick_wall(int blocks) {
+  // Twice as wide as high in bricks: cols = 2 rows.
+  const int rows = std::max(1, static_cast<int>(std::lround(std::sqrt(blocks / 2.0))));
+  const int cols = std::max(1, blocks / rows);
+  const double bw = 1.0, bh = 0.5;
+  ModelInput in;
+  in.geometry.blocks.push_back(make_block(rectangle(-1, -1, cols * bw + 3, 1)));
+  for (int r = 0; r < rows; ++r)
+    for (int c = 0; c < cols; ++c)
+      in.geometry.blocks.push_back(make_block(rectangle(c * bw + (r % 2) * 0.5 * bw, r * bh, bw, bh)));
+  Material m;
+  m.density = 2600;
+  m.young = 5e9;
+  m.poisson = 0.25;
+  in.materials = {m};
+  JointProperties j;
+  j.friction_deg = 35;
+  in.joint_sets = {j};
+  in.control.dt = 1e-3;
+  in.control.w0 = 1.0;
+  for (const double x : {-0.5, 0.5 * cols * bw, cols * bw + 1.5})
+    in.fixed_points.push_back({"base", Vec2(x, -0.5), 0, {}});
+  return in;
+}
+
+const char* solver_name(int code) { return code == 1 ? "cholmod" : code == 2 ? "pcg" : "auto"; }
+
+// A step that throws (a model that blows up) ends the benchmark with its
+// message instead of aborting the program.
+void time_steps(benchmark::State& state, Simulation& sim) {
+  try {
+    for (int s = 0; s < 3; ++s) sim.step();
+  } catch (const std::exception& e) {
+    state.SkipWithError(e.what());
+    return;
+  }
+  const StepTimings t0 = sim.timings();
+  const SolverStats s0 = sim.solver().stats();
+  long steps = 0;
+  for (auto _ : state) {
+    try {
+      sim.step();
+    } catch (const std::exception& e) {
+      state.SkipWithError(e.what());
+      break;
+    }
+    ++steps;
+  }
+  const StepTimings& t1 = sim.timings();
+  const SolverStats s1 = sim.solver().stats();
+  const double total = t1.total - t0.total;
+  const double n = static_cast<double>(std::max(1L, steps));
+  state.counters["blocks"] = sim.model().block_count();
+  state.counters["contacts"] = static_cast<double>(sim.contacts().size());
+  state.counters["ms_per_step"] = 1e3 * total / n;
+  state.counters["steps_per_s"] = n / total;
+  state.counters["search_pct"] = 100 * (t1.contact_search - t0.contact_search) / total;
+  state.counters["assembly_pct"] = 100 * (t1.assembly - t0.assembly) / total;
+  state.counters["solve_pct"] = 100 * (t1.solve - t0.solve) / total;
+  state.counters["solves_per_step"] = static_cast<double>(t1.solves - t0.solves) / n;
+  const long pcg = s1.pcg_solves - s0.pcg_solves;
+  state.counters["pcg_it"] = pcg > 0 ? static_cast<double>(s1.pcg_iterations - s0.pcg_iterations) / pcg : 0;
+  state.counters["fallbacks"] = static_cast<double>(s1.fallbacks - s0.fallbacks);
+  state.counters["analyses_per_step"] = static_cast<double>(s1.analyses - s0.analyses) / n;
+  state.counters["threads"] = omp_get_max_threads();
+}
+
+void BM_BrickWall(benchmark::State& state) {
+  ModelInput in = brick_wall(static_cast<int>(state.range(0)));
+  in.control.solver = solver_name(static_cast<int>(state.range(1)));
+  Simulation sim(build_model(std::move(in)));
+  state.SetLabel(sim.solver().name());
+  time_steps(state, sim);
+}
+
+// The first step from rest: PCG starts from zero (no warm start) and
+// CHOLMOD does its symbolic analysis; the worst case for both.
+void BM_BrickWallFirstStep(benchmark::State& state) {
+  ModelInput in = brick_wall(static_cast<int>(state.range(0)));
+  in.control.solver = solver_name(static_cast<int>(state.range(1)));
+  const Model model = build_model(std::move(in));
+  double pcg_it = 0;
+  for (auto _ : state) {
+    state.PauseTiming();
+    Simulation sim(model);
+    state.ResumeTiming();
+    sim.step();
+    const SolverStats st = sim.solver().stats();
+    pcg_it = st.pcg_solves > 0 ? static_cast<double>(st.pcg_iterations) / st.pcg_solves : 0;
+  }
+  state.counters["pcg_it"] = pcg_it;
+  state.counters["blocks"] = model.block_count();
+}
+
+// Sizes of about 1k, 10k and 50k blocks with the automatic choice; both
+// solvers at the sizes around the crossover.
+BENCHMARK(BM_BrickWall)
+    ->Args({1000, 0})->Args({10000, 0})->Args({50000, 0})
+    ->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
+BENCHMARK(BM_BrickWall)
+    ->ArgsProduct({{30, 100, 250, 1000, 5000}, {1, 2}})
+    ->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.0);
+BENCHMARK(BM_BrickWallFirstStep)
+    ->ArgsProduct({{30, 100, 250, 1000, 5000}, {1, 2}})
+    ->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.0);
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // Our own flags first; the rest goes to Google Benchmark.
+  std::string blocks_file;
+  double dt = 1e-3;
+  std::vector<char*> rest;
+  for (int i = 0; i < argc; ++i) {
+    const bool has_value = i + 1 < argc;
+    if (std::strcmp(argv[i], "--blocks") == 0 && has_value) {
+      blocks_file = argv[++i];
+    } else if (std::strcmp(argv[i], "--dt") == 0 && has_value) {
+      dt = std::atof(argv[++i]);
+    } else {
+      rest.push_back(argv[i]);
+    }
+  }
+  if (!blocks_file.empty()) {
+    ModelInput in;
+    try {
+      in.geometry = dda::read_blocks_h5(blocks_file);
+      in.control.dt = dt;
+      // Loads need forces from a scenario: skip them here.
+      dda::BlockModel no_loads = in.geometry;
+      std::erase_if(no_loads.points, [](const dda::LocatedPoint& p) { return p.point.kind == dda::PointKind::Load; });
+      add_points_from_block_model(no_loads, {}, in);
+      const Model model = build_model(std::move(in));
+      benchmark::RegisterBenchmark(("BM_BlocksFile/" + blocks_file).c_str(), [model](benchmark::State& state) {
+        Simulation sim(model);
+        state.SetLabel(sim.solver().name());
+        time_steps(state, sim);
+      })->Unit(benchmark::kMillisecond)->UseRealTime();
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "bench_df: %s\n", e.what());
+      return 1;
+    }
+  }
+  int rest_argc = static_cast<int>(rest.size());
+  benchmark::Initialize(&rest_argc, rest.data());
+  if (benchmark::ReportUnrecognizedArguments(rest_argc, rest.data())) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

@@ -1,0 +1,33 @@
+#pragma once
+// Energy bookkeeping of a run (J per unit thickness), one record per step.
+//
+// Stored energy: kinetic (of the velocities the next step starts from),
+// elastic (block strain energy S/2 sigma^T E^-1 sigma), contact (penalty
+// springs of closed contacts, N^2 / 2 pn, plus the shear springs of locked
+// ones, S^2 / 2 ps), fixed (fixed-point springs) and bolts (T^2 / 2k).
+// Input work: gravity (m g . centroid displacement) and loads (point loads,
+// as assembled, plus the work of moving fixed points on their springs).
+// Losses that are accounted for: friction (sliding force times slip at every
+// sliding contact), damping (the kinetic energy a dynamic parameter k < 1
+// removes, (1 - k^2) of it) and breakage (energy released by broken bolts).
+// residual = input work - (stored - stored at the start) - friction -
+// damping - breakage: what the time integrator and the penalty springs
+// dissipate (the implicit step loses pn/2 (change of dn)^2 per step and
+// spring, and a contact that opens loses its spring energy). It is 0 to
+// rounding for blocks without contacts.
+namespace dda::df {
+
+struct EnergyRecord {
+  double time = 0;                 // s, end of the step
+  // Stored, at the end of the step.
+  double kinetic = 0, elastic = 0, contact = 0, fixed = 0, bolts = 0;
+  // Cumulative since t = 0.
+  double gravity_work = 0, load_work = 0;
+  double friction = 0, damping = 0, breakage = 0;
+  double residual = 0;
+
+  double stored() const { return kinetic + elastic + contact + fixed + bolts; }
+  double input() const { return gravity_work + load_work; }
+};
+
+}  // namespace dda::df

@@ -1,0 +1,29 @@
+#pragma once
+// Where the time of the steps goes (wall clock, summed over all steps since
+// the Simulation was made; see Simulation::timings()).
+#include <chrono>
+
+namespace dda::df {
+
+struct StepTimings {
+  double contact_search = 0;  // s: broad + narrow phase and contact geometry
+  double assembly = 0;        // s: K and F, every open-close iteration
+  double solve = 0;           // s: the linear solves
+  double total = 0;           // s: whole steps, attempts thrown away included
+  long solves = 0;            // linear solves done
+};
+
+// Adds the wall time of its own lifetime to a StepTimings field.
+class ScopedTimer {
+ public:
+  explicit ScopedTimer(double& sink) : sink_(sink), start_(std::chrono::steady_clock::now()) {}
+  ~ScopedTimer() { sink_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
+  ScopedTimer(const ScopedTimer&) = delete;
+  ScopedTimer& operator=(const ScopedTimer&) = delete;
+
+ private:
+  double& sink_;
+  std::chrono::steady_clock::time_point start_;
+};
+
+}  // namespace dda::df

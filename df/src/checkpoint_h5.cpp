@@ -1,0 +1,246 @@
+// /checkpoint of a results file: block states, contacts with their states,
+// reference points and friction memory, point positions, time, dt and the
+// step count. Everything is float64 or int32, so it reads back bit for bit.
+#include "checkpoint_h5.hpp"
+
+#include <cstdint>
+#include <string>
+
+#include "dda/df/block_kinematics.hpp"
+
+namespace dda::df {
+namespace {
+
+std::vector<double> flat(const std::vector<Vec2>& v) {
+  std::vector<double> out;
+  out.reserve(2 * v.size());
+  for (const Vec2& p : v) out.insert(out.end(), {p.x(), p.y()});
+  return out;
+}
+
+template <class Get>
+std::vector<std::int32_t> ints(const std::vector<Contact>& cs, Get get) {
+  std::vector<std::int32_t> out;
+  out.reserve(cs.size());
+  for (const Contact& c : cs) out.push_back(static_cast<std::int32_t>(get(c)));
+  return out;
+}
+
+template <class Get>
+std::vector<double> reals(const std::vector<Contact>& cs, Get get) {
+  std::vector<double> out;
+  out.reserve(cs.size());
+  for (const Contact& c : cs) out.push_back(get(c));
+  return out;
+}
+
+std::vector<Vec2> points(const h5::Reader& r, const std::string& name, std::size_t n) {
+  const h5::Array<double> a = r.f64(name);
+  if (a.dims.size() != 2 || a.dims[0] != n || a.dims[1] != 2)
+    r.fail("dataset " + name + " must have shape (" + std::to_string(n) + ", 2) for this model");
+  std::vector<Vec2> out(n);
+  for (std::size_t i = 0; i < n; ++i) out[i] = Vec2(a.data[2 * i], a.data[2 * i + 1]);
+  return out;
+}
+
+std::size_t rows_of(const h5::Reader& r, const std::string& name) {
+  const h5::Array<double> a = r.f64(name);
+  return a.dims.empty() ? 0 : a.dims[0];
+}
+
+}  // namespace
+
+void write_checkpoint(h5::Writer& w, const SimulationState& s) {
+  h5::Id g = w.group("checkpoint");
+  w.attr_f64(g.get(), "time", s.time);
+  w.attr_f64(g.get(), "dt", s.dt);
+  w.attr_i32(g.get(), "step_count", s.step_count);
+  w.attr_i32(g.get(), "started", s.started ? 1 : 0);
+  w.attr_text(g.get(), "description",
+              "complete simulation state after step step_count; with /steps (the log) and /series (the "
+              "histories) it is what `dda df --resume` continues from");
+
+  const std::size_t nb = s.blocks.size();
+  std::vector<Vec2> verts;
+  std::vector<double> vel, vel_end, stress;
+  for (const BlockState& b : s.blocks) {
+    verts.insert(verts.end(), b.vertices.begin(), b.vertices.end());
+    for (int k = 0; k < kDofs; ++k) vel.push_back(b.velocity[k]);
+    for (int k = 0; k < kDofs; ++k) vel_end.push_back(b.velocity_end[k]);
+    for (int k = 0; k < 3; ++k) stress.push_back(b.stress[k]);
+  }
+  h5::Id bg(H5Gcreate2(g.get(), "blocks", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+  w.f64(bg.get(), "vertices", flat(verts), {verts.size(), 2}, "m", "current vertices, ragged as /model/blocks");
+  w.f64(bg.get(), "velocity", vel, {nb, kDofs}, "m/s, rad/s, 1/s",
+        "start velocity of the next step (dynamic * end velocity): u v r ex ey gxy rates at the centroid");
+  w.f64(bg.get(), "velocity_end", vel_end, {nb, kDofs}, "m/s, rad/s, 1/s", "end velocity of the last step");
+  w.f64(bg.get(), "stress", stress, {nb, 3}, "Pa", "sx sy txy, tension positive");
+
+  const std::vector<Contact>& cs = s.contacts;
+  h5::Id cg(H5Gcreate2(g.get(), "contacts", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+  const hid_t c = cg.get();
+  w.i32(c, "vertex_block", ints(cs, [](const Contact& x) { return x.vblock; }), "", "block of the vertex P1");
+  w.i32(c, "vertex", ints(cs, [](const Contact& x) { return x.vertex; }), "", "vertex index in its block");
+  w.i32(c, "edge_block", ints(cs, [](const Contact& x) { return x.eblock; }), "", "block of the edge");
+  w.i32(c, "edge", ints(cs, [](const Contact& x) { return x.edge; }), "", "edge index (from vertex edge to the next)");
+  w.i32(c, "joint", ints(cs, [](const Contact& x) { return x.joint; }), "", "joint index (joint sets, then default)");
+  w.i32(c, "state", ints(cs, [](const Contact& x) { return static_cast<int>(x.state); }), "",
+        "0 open, 1 sliding, 2 locked");
+  w.i32(c, "slip_sign", ints(cs, [](const Contact& x) { return x.slip_sign; }), "", "+1/-1 slip direction along the edge");
+  w.i32(c, "bonded", ints(cs, [](const Contact& x) { return x.bonded ? 1 : 0; }), "", "1: intact cohesive/tensile bond");
+  w.i32(c, "broke", ints(cs, [](const Contact& x) { return x.broke ? 1 : 0; }), "", "1: bond broke in the last iterate");
+  w.i32(c, "friction_settled", ints(cs, [](const Contact& x) { return x.friction_settled ? 1 : 0; }), "",
+        "1: friction force settled in the last iterate");
+  w.f64(c, "ref_ratio", reals(cs, [](const Contact& x) { return x.ref_ratio; }), {cs.size()}, "1",
+        "shear reference point on the edge (0 at its first vertex, 1 at its second)");
+  w.f64(c, "normal_force", reals(cs, [](const Contact& x) { return x.normal_force; }), {cs.size()}, "N",
+        "compression positive");
+  w.f64(c, "shear_force", reals(cs, [](const Contact& x) { return x.shear_force; }), {cs.size()}, "N",
+        "on the vertex along the edge");
+  w.f64(c, "slip_velocity", reals(cs, [](const Contact& x) { return x.slip_velocity; }), {cs.size()}, "m/s",
+        "relative sliding speed");
+  w.f64(c, "length", reals(cs, [](const Contact& x) { return x.length; }), {cs.size()}, "m",
+        "joint length the contact stands for");
+  w.f64(c, "friction_theta", reals(cs, [](const Contact& x) { return x.friction.theta; }), {cs.size()}, "s",
+        "rate-and-state variable");
+  w.f64(c, "friction_slip", reals(cs, [](const Contact& x) { return x.friction.slip; }), {cs.size()}, "m",
+        "cumulative slip");
+
+  h5::Id pg(H5Gcreate2(g.get(), "points", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+  w.f64(pg.get(), "fixed_anchor", flat(s.fixed_anchor), {s.fixed_anchor.size(), 2}, "m",
+        "where each fixed point is held");
+  w.f64(pg.get(), "fixed_position", flat(s.fixed_pos), {s.fixed_pos.size(), 2}, "m", "current material position");
+  w.f64(pg.get(), "load_position", flat(s.load_pos), {s.load_pos.size(), 2}, "m", "current load point positions");
+  w.f64(pg.get(), "measurement_position", flat(s.measurement_pos), {s.measurement_pos.size(), 2}, "m",
+        "current measurement point positions");
+
+  h5::Id bolts(H5Gcreate2(g.get(), "bolts", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+  {
+    std::vector<Vec2> anchor, head;
+    std::vector<double> rest, force;
+    std::vector<std::int32_t> broken;
+    for (const BoltState& b : s.bolts) {
+      anchor.push_back(b.anchor);
+      head.push_back(b.head);
+      rest.push_back(b.rest_length);
+      force.push_back(b.force);
+      broken.push_back(b.broken ? 1 : 0);
+    }
+    const std::size_t nbolt = s.bolts.size();
+    w.f64(bolts.get(), "anchor", flat(anchor), {nbolt, 2}, "m", "current anchor end of each bolt");
+    w.f64(bolts.get(), "head", flat(head), {nbolt, 2}, "m", "current head end of each bolt");
+    w.f64(bolts.get(), "rest_length", rest, {nbolt}, "m", "initial length L0");
+    w.f64(bolts.get(), "force", force, {nbolt}, "N", "axial force, tension positive");
+    w.i32(bolts.get(), "broken", broken, "", "1 once broken");
+  }
+
+  h5::Id sg(H5Gcreate2(g.get(), "solver", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+  const Eigen::VectorXd& x = s.solver_warm_start.x;
+  w.f64(sg.get(), "warm_start", std::vector<double>(x.data(), x.data() + x.size()), {static_cast<hsize_t>(x.size())},
+        "m, rad, 1", "last solution of an iterative solver (its next start vector); empty for direct solvers");
+  w.attr_f64(sg.get(), "warm_start_dt", s.solver_warm_start.dt);
+}
+
+void read_checkpoint(const h5::Reader& r, const std::vector<std::size_t>& vertex_counts, SimulationState& s) {
+  if (!r.exists("/checkpoint")) r.fail("has no /checkpoint group, so the run cannot be resumed");
+  h5::Id g(H5Gopen2(r.file(), "/checkpoint", H5P_DEFAULT), H5Gclose);
+  if (!g.valid()) r.fail("/checkpoint is not a group");
+  const auto time = r.attr_f64(g.get(), "time", "/checkpoint");
+  const auto dt = r.attr_f64(g.get(), "dt", "/checkpoint");
+  const auto steps = r.attr_int(g.get(), "step_count", "/checkpoint");
+  if (!time || !dt || !steps) r.fail("/checkpoint lacks one of its attributes time, dt, step_count");
+  s.time = *time;
+  s.dt = *dt;
+  s.step_count = static_cast<int>(*steps);
+  s.started = r.attr_int(g.get(), "started", "/checkpoint").value_or(1) != 0;
+
+  const std::size_t nb = vertex_counts.size();
+  std::size_t nv = 0;
+  for (std::size_t n : vertex_counts) nv += n;
+  const std::vector<Vec2> verts = points(r, "/checkpoint/blocks/vertices", nv);
+  auto table = [&r](const std::string& name, std::size_t rows, std::size_t cols) {
+    const h5::Array<double> a = r.f64(name);
+    if (a.dims.size() != 2 || a.dims[0] != rows || a.dims[1] != cols)
+      r.fail("dataset " + name + " must have shape (" + std::to_string(rows) + ", " + std::to_string(cols) + ")");
+    return a.data;
+  };
+  const std::vector<double> vel = table("/checkpoint/blocks/velocity", nb, kDofs);
+  const std::vector<double> vel_end = table("/checkpoint/blocks/velocity_end", nb, kDofs);
+  const std::vector<double> stress = table("/checkpoint/blocks/stress", nb, 3);
+  s.blocks.assign(nb, BlockState{});
+  std::size_t at = 0;
+  for (std::size_t i = 0; i < nb; ++i) {
+    BlockState& b = s.blocks[i];
+    b.vertices.assign(verts.begin() + static_cast<long>(at), verts.begin() + static_cast<long>(at + vertex_counts[i]));
+    at += vertex_counts[i];
+    b.geometry = block_geometry(b.vertices);
+    for (int k = 0; k < kDofs; ++k) b.velocity[k] = vel[kDofs * i + k];
+    for (int k = 0; k < kDofs; ++k) b.velocity_end[k] = vel_end[kDofs * i + k];
+    for (int k = 0; k < 3; ++k) b.stress[k] = stress[3 * i + k];
+  }
+
+  const std::string c = "/checkpoint/contacts/";
+  const std::size_t nc = rows_of(r, c + "normal_force");
+  auto ivec = [&](const std::string& name) {
+    const h5::Array<std::int64_t> a = r.i64(c + name);
+    if (a.dims.size() != 1 || a.dims[0] != nc) r.fail("dataset " + c + name + " must have one value per contact");
+    return a.data;
+  };
+  auto rvec = [&](const std::string& name) {
+    const h5::Array<double> a = r.f64(c + name);
+    if (a.dims.size() != 1 || a.dims[0] != nc) r.fail("dataset " + c + name + " must have one value per contact");
+    return a.data;
+  };
+  const auto vb = ivec("vertex_block"), vx = ivec("vertex"), eb = ivec("edge_block"), ed = ivec("edge"),
+             jt = ivec("joint"), st = ivec("state"), sg = ivec("slip_sign"), bo = ivec("bonded"), br = ivec("broke"),
+             fs = ivec("friction_settled");
+  const auto rr = rvec("ref_ratio"), nf = rvec("normal_force"), sf = rvec("shear_force"), sv = rvec("slip_velocity"),
+             ln = rvec("length"), th = rvec("friction_theta"), sl = rvec("friction_slip");
+  s.contacts.assign(nc, Contact{});
+  for (std::size_t k = 0; k < nc; ++k) {
+    Contact& x = s.contacts[k];
+    x.vblock = static_cast<int>(vb[k]);
+    x.vertex = static_cast<int>(vx[k]);
+    x.eblock = static_cast<int>(eb[k]);
+    x.edge = static_cast<int>(ed[k]);
+    x.joint = static_cast<int>(jt[k]);
+    if (st[k] < 0 || st[k] > 2) r.fail("dataset " + c + "state holds an unknown contact state");
+    x.state = static_cast<ContactState>(st[k]);
+    x.slip_sign = static_cast<int>(sg[k]);
+    x.bonded = bo[k] != 0;
+    x.broke = br[k] != 0;
+    x.friction_settled = fs[k] != 0;
+    x.ref_ratio = rr[k];
+    x.normal_force = nf[k];
+    x.shear_force = sf[k];
+    x.slip_velocity = sv[k];
+    x.length = ln[k];
+    x.friction.theta = th[k];
+    x.friction.slip = sl[k];
+  }
+
+  const std::string p = "/checkpoint/points/";
+  s.fixed_anchor = points(r, p + "fixed_anchor", rows_of(r, p + "fixed_anchor"));
+  s.fixed_pos = points(r, p + "fixed_position", rows_of(r, p + "fixed_position"));
+  s.load_pos = points(r, p + "load_position", rows_of(r, p + "load_position"));
+  s.measurement_pos = points(r, p + "measurement_position", rows_of(r, p + "measurement_position"));
+
+  const std::string b = "/checkpoint/bolts/";
+  const std::size_t nbolts = rows_of(r, b + "anchor");
+  const std::vector<Vec2> anchor = points(r, b + "anchor", nbolts), head = points(r, b + "head", nbolts);
+  const h5::Array<double> rest = r.f64(b + "rest_length"), force = r.f64(b + "force");
+  const h5::Array<std::int64_t> broken = r.i64(b + "broken");
+  if (rest.data.size() != nbolts || force.data.size() != nbolts || broken.data.size() != nbolts)
+    r.fail("the datasets of /checkpoint/bolts differ in length");
+  s.bolts.assign(nbolts, BoltState{});
+  for (std::size_t k = 0; k < nbolts; ++k)
+    s.bolts[k] = {anchor[k], head[k], rest.data[k], force.data[k], broken.data[k] != 0};
+
+  const h5::Array<double> x = r.f64("/checkpoint/solver/warm_start");
+  if (x.dims.size() != 1) r.fail("dataset /checkpoint/solver/warm_start must be one-dimensional");
+  s.solver_warm_start.x = Eigen::Map<const Eigen::VectorXd>(x.data.data(), static_cast<Eigen::Index>(x.data.size()));
+  h5::Id solver_group(H5Gopen2(r.file(), "/checkpoint/solver", H5P_DEFAULT), H5Gclose);
+  s.solver_warm_start.dt = r.attr_f64(solver_group.get(), "warm_start_dt", "/checkpoint/solver").value_or(0);
+}
+
+}  // namespace dda::df

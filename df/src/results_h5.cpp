@@ -1,0 +1,553 @@
+// The results file (format "dda-results"). Layout, dataset by dataset, in
+// docs/formats.md; keep the two in step.
+#include <cmath>
+#include <cstdint>
+#include <ctime>
+
+#include "checkpoint_h5.hpp"
+#include "dda/common/atomic_file.hpp"
+#include "dda/common/error.hpp"
+#include "dda/df/results.hpp"
+
+namespace dda::df {
+namespace {
+
+constexpr const char* kFormat = "dda-results";
+constexpr int kFormatVersion = 1;
+constexpr const char* kUnits =
+    "SI: lengths m, time s, velocity m/s, rotation rad, stress Pa, force N and energy J per unit thickness";
+
+std::string utc_now() {
+  const std::time_t t = std::time(nullptr);
+  std::tm tm{};
+  gmtime_r(&t, &tm);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
+  return buf;
+}
+
+std::vector<double> flat(const std::vector<Vec2>& v) {
+  std::vector<double> out;
+  out.reserve(2 * v.size());
+  for (const Vec2& p : v) out.insert(out.end(), {p.x(), p.y()});
+  return out;
+}
+
+h5::Id subgroup(h5::Writer& w, hid_t parent, const std::string& name) {
+  h5::Id g(H5Gcreate2(parent, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+  if (!g.valid()) throw InputError("cannot create HDF5 group " + name + ".");
+  (void)w;
+  return g;
+}
+
+void write_model(h5::Writer& w, const Results& r, const Model& model) {
+  h5::Id g = w.group("model");
+  w.attr_text(g.get(), "description", "the blocks, joint sets and points the run started from");
+  const BlockModel& bm = r.blocks;
+  {
+    h5::Id b = subgroup(w, g.get(), "blocks");
+    std::vector<Vec2> verts;
+    std::vector<std::int64_t> offsets{0};
+    std::vector<std::int32_t> edge_set, layer, material;
+    for (std::size_t i = 0; i < bm.blocks.size(); ++i) {
+      const Block& blk = bm.blocks[i];
+      verts.insert(verts.end(), blk.vertices.begin(), blk.vertices.end());
+      offsets.push_back(static_cast<std::int64_t>(verts.size()));
+      for (std::size_t k = 0; k < blk.vertices.size(); ++k)
+        edge_set.push_back(k < blk.edge_set.size() ? blk.edge_set[k] : kBoundarySet);
+      layer.push_back(blk.layer);
+      material.push_back(i < model.block_material.size() ? model.block_material[i] : 0);
+    }
+    w.f64(b.get(), "vertices", flat(verts), {verts.size(), 2}, "m", "initial block vertices, ragged, counter-clockwise");
+    w.i64(b.get(), "offsets", offsets, "", "block i is vertices[offsets[i]:offsets[i+1]]");
+    w.i32(b.get(), "edge_set", edge_set, "", "joint set of the edge from each vertex to the next (as in blocks files)");
+    w.i32(b.get(), "layer", layer, "", "bed of the block, -1 if not layered");
+    w.i32(b.get(), "material", material, "", "material index of the block (see /model/materials)");
+  }
+  {
+    h5::Id s = subgroup(w, g.get(), "sets");
+    std::vector<std::string> names, origins;
+    for (const JointSetInfo& js : bm.sets) names.push_back(js.name), origins.push_back(js.origin);
+    w.strings(s.get(), "name", names, "", "joint set names (index = set id)");
+    w.strings(s.get(), "origin", origins, "", "where each set came from");
+  }
+  {
+    h5::Id p = subgroup(w, g.get(), "points");
+    std::vector<std::string> names;
+    std::vector<std::int32_t> kinds, blocks;
+    std::vector<Vec2> xy;
+    for (const LocatedPoint& lp : bm.points) {
+      names.push_back(lp.point.name);
+      kinds.push_back(static_cast<std::int32_t>(lp.point.kind));
+      blocks.push_back(lp.block);
+      xy.push_back(lp.point.p);
+    }
+    w.strings(p.get(), "name", names, "", "point names");
+    w.i32(p.get(), "kind", kinds, "", "0 fixed, 1 load, 2 measurement, 3 hole");
+    w.f64(p.get(), "xy", flat(xy), {xy.size(), 2}, "m", "initial positions");
+    w.i32(p.get(), "block", blocks, "", "block containing the point");
+  }
+  {
+    h5::Id l = subgroup(w, g.get(), "layers");
+    std::vector<double> bottom, top;
+    for (const Layer& layer : bm.layers) bottom.push_back(layer.bottom), top.push_back(layer.top);
+    w.f64(l.get(), "bottom", bottom, {bottom.size()}, "m", "lower boundary of each bed");
+    w.f64(l.get(), "top", top, {top.size()}, "m", "upper boundary of each bed");
+  }
+  {
+    h5::Id m = subgroup(w, g.get(), "materials");
+    std::vector<double> props;
+    for (const Material& mat : model.materials)
+      props.insert(props.end(), {mat.density, mat.young, mat.poisson, mat.plane == PlaneMode::Strain ? 1.0 : 0.0});
+    w.f64(m.get(), "properties", props, {model.materials.size(), 4}, "kg/m^3, Pa, 1, -",
+          "density, young, poisson, plane (0 stress, 1 strain) of each material");
+  }
+}
+
+void write_series(h5::Writer& w, const Simulation& sim) {
+  const auto& hs = sim.histories();
+  const Model& model = sim.model();
+  {
+    h5::Id g = w.group("points");
+    std::vector<std::string> names;
+    std::vector<std::int32_t> blocks;
+    std::vector<Vec2> initial;
+    for (const MeasurementPoint& p : model.measurements) {
+      names.push_back(p.name);
+      blocks.push_back(p.block);
+      initial.push_back(p.position);
+    }
+    w.strings(g.get(), "name", names, "", "measurement point names, in the order of the /series columns");
+    w.i32(g.get(), "block", blocks, "", "block each point rides with");
+    w.f64(g.get(), "initial", flat(initial), {initial.size(), 2}, "m", "position at the start of the run");
+  }
+  h5::Id g = w.group("series");
+  w.attr_text(g.get(), "description",
+              "measurement point time series: sample 0 is the start of the run, then one sample per step");
+  const std::size_t np = hs.size();
+  std::vector<double> time;
+  if (np > 0) {
+    for (const MeasurementSample& m : hs[0]) time.push_back(m.time);
+  } else {
+    time.push_back(sim.log().empty() ? sim.time() : sim.log().front().time - sim.log().front().dt);
+    for (const StepRecord& s : sim.log()) time.push_back(s.time);
+  }
+  const std::size_t ns = time.size();
+  std::vector<double> pos, disp, vel, stress;
+  pos.reserve(ns * np * 2);
+  for (std::size_t s = 0; s < ns; ++s)
+    for (std::size_t p = 0; p < np; ++p) {
+      const MeasurementSample& m = hs[p][s];
+      pos.insert(pos.end(), {m.position.x(), m.position.y()});
+      disp.insert(disp.end(), {m.displacement.x(), m.displacement.y()});
+      vel.insert(vel.end(), {m.velocity.x(), m.velocity.y()});
+      stress.insert(stress.end(), {m.stress[0], m.stress[1], m.stress[2]});
+    }
+  w.f64(g.get(), "time", time, {ns}, "s", "time of each sample");
+  w.f64(g.get(), "position", pos, {ns, np, 2}, "m", "x y of each point");
+  w.f64(g.get(), "displacement", disp, {ns, np, 2}, "m", "ux uy from the start of the run");
+  w.f64(g.get(), "velocity", vel, {ns, np, 2}, "m/s", "vx vy at the end of the step");
+  w.f64(g.get(), "stress", stress, {ns, np, 3}, "Pa", "sxx syy sxy of the block the point lies in");
+}
+
+void write_steps(h5::Writer& w, const std::vector<StepRecord>& log) {
+  h5::Id g = w.group("steps");
+  w.attr_text(g.get(), "description", "one row per accepted step");
+  auto ints = [&log](auto get) {
+    std::vector<std::int32_t> v;
+    v.reserve(log.size());
+    for (const StepRecord& r : log) v.push_back(static_cast<std::int32_t>(get(r)));
+    return v;
+  };
+  auto reals = [&log](auto get) {
+    std::vector<double> v;
+    v.reserve(log.size());
+    for (const StepRecord& r : log) v.push_back(get(r));
+    return v;
+  };
+  const std::vector<hsize_t> n{log.size()};
+  w.i32(g.get(), "step", ints([](const StepRecord& r) { return r.step; }), "", "step number (1, 2, ...)");
+  w.f64(g.get(), "time", reals([](const StepRecord& r) { return r.time; }), n, "s", "time at the end of the step");
+  w.f64(g.get(), "dt", reals([](const StepRecord& r) { return r.dt; }), n, "s", "time step taken");
+  w.i32(g.get(), "iterations", ints([](const StepRecord& r) { return r.open_close_iterations; }), "",
+        "open-close iterations of the accepted attempt");
+  w.i32(g.get(), "dt_cuts", ints([](const StepRecord& r) { return r.dt_cuts; }), "", "attempts redone with a smaller dt");
+  w.i32(g.get(), "converged", ints([](const StepRecord& r) { return r.converged ? 1 : 0; }), "",
+        "0: accepted at the smallest dt without the contact states settling");
+  w.i32(g.get(), "open", ints([](const StepRecord& r) { return r.open; }), "", "open contacts");
+  w.i32(g.get(), "sliding", ints([](const StepRecord& r) { return r.sliding; }), "", "sliding contacts");
+  w.i32(g.get(), "locked", ints([](const StepRecord& r) { return r.locked; }), "", "locked contacts");
+  w.f64(g.get(), "max_displacement", reals([](const StepRecord& r) { return r.max_displacement; }), n, "m",
+        "largest vertex displacement of the step");
+  w.f64(g.get(), "kinetic_energy", reals([](const StepRecord& r) { return r.kinetic_energy; }), n, "J",
+        "kinetic energy at the end of the step (per unit thickness)");
+  w.f64(g.get(), "elastic_energy", reals([](const StepRecord& r) { return r.elastic_energy; }), n, "J",
+        "strain energy of the blocks (per unit thickness)");
+}
+
+void write_energy(h5::Writer& w, const std::vector<EnergyRecord>& log) {
+  h5::Id g = w.group("energy");
+  w.attr_text(g.get(), "description",
+              "energy ledger (J per unit thickness): record 0 is the start of the run, then one per step; "
+              "stored energies at the end of the step, work and losses cumulative (see df/energy.hpp)");
+  const std::vector<hsize_t> n{log.size()};
+  auto col = [&](const char* name, auto get, const char* what) {
+    std::vector<double> v;
+    v.reserve(log.size());
+    for (const EnergyRecord& e : log) v.push_back(get(e));
+    w.f64(g.get(), name, v, n, std::string(name) == "time" ? "s" : "J", what);
+  };
+  col("time", [](const EnergyRecord& e) { return e.time; }, "time of the record");
+  col("kinetic", [](const EnergyRecord& e) { return e.kinetic; }, "kinetic energy of the start velocities of the next step");
+  col("elastic", [](const EnergyRecord& e) { return e.elastic; }, "block strain energy");
+  col("contact", [](const EnergyRecord& e) { return e.contact; }, "energy in the contact penalty springs");
+  col("fixed", [](const EnergyRecord& e) { return e.fixed; }, "energy in the fixed-point springs");
+  col("bolts", [](const EnergyRecord& e) { return e.bolts; }, "energy in the bolts");
+  col("gravity_work", [](const EnergyRecord& e) { return e.gravity_work; }, "work of gravity, cumulative");
+  col("load_work", [](const EnergyRecord& e) { return e.load_work; },
+      "work of point loads and moving fixed points, cumulative");
+  col("friction", [](const EnergyRecord& e) { return e.friction; }, "friction dissipation, cumulative");
+  col("damping", [](const EnergyRecord& e) { return e.damping; }, "kinetic energy removed by dynamic < 1, cumulative");
+  col("breakage", [](const EnergyRecord& e) { return e.breakage; }, "energy released by broken bolts, cumulative");
+  col("residual", [](const EnergyRecord& e) { return e.residual; },
+      "input - change of stored - friction - damping - breakage: what the integrator and penalties dissipate");
+}
+
+void write_bolts(h5::Writer& w, const Simulation& sim) {
+  h5::Id g = w.group("bolts");
+  w.attr_text(g.get(), "description", "rock bolt series: sample 0 is the start of the run, then one per step");
+  const auto& bolts = sim.model().bolts;
+  const auto& hs = sim.bolt_histories();
+  std::vector<std::string> names;
+  for (const Bolt& b : bolts) names.push_back(b.name);
+  w.strings(g.get(), "name", names, "", "bolt names, in the order of the columns");
+  const std::size_t nb = hs.size();
+  const std::size_t ns = nb ? hs[0].size() : 0;
+  std::vector<double> time, force, length;
+  std::vector<std::int32_t> broken;
+  for (std::size_t s = 0; s < ns; ++s) {
+    time.push_back(hs[0][s].time);
+    for (std::size_t b = 0; b < nb; ++b) {
+      force.push_back(hs[b][s].force);
+      length.push_back(hs[b][s].length);
+      broken.push_back(hs[b][s].broken ? 1 : 0);
+    }
+  }
+  w.f64(g.get(), "time", time, {ns}, "s", "time of each sample");
+  w.f64(g.get(), "force", force, {ns, nb}, "N", "axial force, tension positive (per unit thickness)");
+  w.f64(g.get(), "length", length, {ns, nb}, "m", "current length");
+  w.i32(g.get(), "broken", broken, "", "1 once the bolt has broken; row-major (samples, bolts)");
+}
+
+void write_frames(h5::Writer& w, const std::vector<Frame>& frames, std::size_t nv, std::size_t nb) {
+  h5::Id g = w.group("frames");
+  w.attr_text(g.get(), "description", "block states at the output interval; frame 0 is the start of the run");
+  std::vector<std::int32_t> step;
+  std::vector<double> time, verts, vel, stress;
+  for (const Frame& f : frames) {
+    step.push_back(f.step);
+    time.push_back(f.time);
+    for (const Vec2& v : f.vertices) verts.insert(verts.end(), {v.x(), v.y()});
+    for (const Vector6d& v : f.velocity) vel.insert(vel.end(), v.data(), v.data() + kDofs);
+    for (const Vector3d& s : f.stress) stress.insert(stress.end(), s.data(), s.data() + 3);
+  }
+  const std::size_t nf = frames.size();
+  w.i32(g.get(), "step", step, "", "step of each frame (0: the start)");
+  w.f64(g.get(), "time", time, {nf}, "s", "time of each frame");
+  w.f64(g.get(), "vertices", verts, {nf, nv, 2}, "m", "block vertices, ragged as /model/blocks");
+  w.f64(g.get(), "velocity", vel, {nf, nb, kDofs}, "m/s, rad/s, 1/s",
+        "end velocity of each block: u v r ex ey gxy rates at its centroid");
+  w.f64(g.get(), "stress", stress, {nf, nb, 3}, "Pa", "sx sy txy of each block, tension positive");
+}
+
+// --------------------------------------------------------------- reading
+
+template <class T>
+void expect_shape(const h5::Reader& r, const std::string& name, const h5::Array<T>& a,
+                  const std::vector<hsize_t>& dims) {
+  if (a.dims != dims) {
+    std::string want = "(";
+    for (std::size_t i = 0; i < dims.size(); ++i) want += (i ? ", " : "") + std::to_string(dims[i]);
+    r.fail("dataset " + name + " has an unexpected shape, expected " + want + (dims.size() == 1 ? ",)" : ")"));
+  }
+}
+
+std::vector<double> f64(const h5::Reader& r, const std::string& name, const std::vector<hsize_t>& dims) {
+  h5::Array<double> a = r.f64(name);
+  expect_shape(r, name, a, dims);
+  return std::move(a.data);
+}
+
+std::vector<std::int64_t> i64(const h5::Reader& r, const std::string& name, std::size_t n) {
+  h5::Array<std::int64_t> a = r.i64(name);
+  expect_shape(r, name, a, {n});
+  return std::move(a.data);
+}
+
+std::size_t length(const h5::Reader& r, const std::string& name) {
+  const h5::Array<double> a = r.f64(name);
+  if (a.dims.empty()) r.fail("dataset " + name + " must be an array");
+  return a.dims[0];
+}
+
+void read_model(const h5::Reader& r, Results& out) {
+  BlockModel& bm = out.blocks;
+  const std::size_t nv = length(r, "/model/blocks/vertices");
+  const std::vector<double> xy = f64(r, "/model/blocks/vertices", {nv, 2});
+  const std::size_t nb1 = length(r, "/model/blocks/offsets");
+  if (nb1 < 1) r.fail("dataset /model/blocks/offsets is empty");
+  const std::vector<std::int64_t> off = i64(r, "/model/blocks/offsets", nb1);
+  const std::size_t nb = nb1 - 1;
+  const std::vector<std::int64_t> es = i64(r, "/model/blocks/edge_set", nv);
+  const std::vector<std::int64_t> layer = i64(r, "/model/blocks/layer", nb);
+  if (off.front() != 0 || off.back() != static_cast<std::int64_t>(nv))
+    r.fail("dataset /model/blocks/offsets must start at 0 and end at the vertex count");
+  for (std::size_t i = 0; i < nb; ++i) {
+    if (off[i + 1] - off[i] < 3) r.fail("dataset /model/blocks/offsets gives a block fewer than 3 vertices");
+    Block b;
+    for (std::int64_t k = off[i]; k < off[i + 1]; ++k) {
+      b.vertices.emplace_back(xy[2 * k], xy[2 * k + 1]);
+      b.edge_set.push_back(static_cast<int>(es[k]));
+    }
+    const PolygonMoments m = polygon_moments(b.vertices);
+    b.area = m.area;
+    b.centroid = m.centroid;
+    b.sxx = m.sxx;
+    b.syy = m.syy;
+    b.sxy = m.sxy;
+    b.layer = static_cast<int>(layer[i]);
+    bm.blocks.push_back(std::move(b));
+  }
+  const std::vector<std::string> names = r.strings("/model/sets/name");
+  const std::vector<std::string> origins = r.strings("/model/sets/origin");
+  if (names.size() != origins.size()) r.fail("datasets /model/sets/name and /model/sets/origin differ in length");
+  for (std::size_t i = 0; i < names.size(); ++i) bm.sets.push_back({names[i], origins[i]});
+  const std::vector<std::string> pnames = r.strings("/model/points/name");
+  const std::size_t np = pnames.size();
+  const std::vector<std::int64_t> kinds = i64(r, "/model/points/kind", np);
+  const std::vector<std::int64_t> pblocks = i64(r, "/model/points/block", np);
+  const std::vector<double> pxy = f64(r, "/model/points/xy", {np, 2});
+  for (std::size_t i = 0; i < np; ++i) {
+    if (kinds[i] < 0 || kinds[i] > 3) r.fail("dataset /model/points/kind holds an unknown point kind");
+    if (pblocks[i] < -1 || pblocks[i] >= static_cast<std::int64_t>(nb))
+      r.fail("dataset /model/points/block refers to a block that does not exist");
+    LocatedPoint lp;
+    lp.point = {pnames[i], static_cast<PointKind>(kinds[i]), Vec2(pxy[2 * i], pxy[2 * i + 1])};
+    lp.block = static_cast<int>(pblocks[i]);
+    bm.points.push_back(lp);
+  }
+  const std::size_t nl = length(r, "/model/layers/bottom");
+  const std::vector<double> bottom = f64(r, "/model/layers/bottom", {nl});
+  const std::vector<double> top = f64(r, "/model/layers/top", {nl});
+  for (std::size_t i = 0; i < nl; ++i) {
+    Layer l;
+    l.bottom = bottom[i];
+    l.top = top[i];
+    bm.layers.push_back(l);
+  }
+}
+
+void read_log(const h5::Reader& r, Results& out) {
+  const std::size_t n = length(r, "/steps/time");
+  const auto step = i64(r, "/steps/step", n), it = i64(r, "/steps/iterations", n), cuts = i64(r, "/steps/dt_cuts", n),
+             conv = i64(r, "/steps/converged", n), open = i64(r, "/steps/open", n),
+             sliding = i64(r, "/steps/sliding", n), locked = i64(r, "/steps/locked", n);
+  const auto time = f64(r, "/steps/time", {n}), dt = f64(r, "/steps/dt", {n}),
+             maxd = f64(r, "/steps/max_displacement", {n}), ke = f64(r, "/steps/kinetic_energy", {n}),
+             ee = f64(r, "/steps/elastic_energy", {n});
+  out.log.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    StepRecord& s = out.log[i];
+    s.step = static_cast<int>(step[i]);
+    s.time = time[i];
+    s.dt = dt[i];
+    s.open_close_iterations = static_cast<int>(it[i]);
+    s.dt_cuts = static_cast<int>(cuts[i]);
+    s.converged = conv[i] != 0;
+    s.open = static_cast<int>(open[i]);
+    s.sliding = static_cast<int>(sliding[i]);
+    s.locked = static_cast<int>(locked[i]);
+    s.max_displacement = maxd[i];
+    s.kinetic_energy = ke[i];
+    s.elastic_energy = ee[i];
+  }
+}
+
+void read_series(const h5::Reader& r, Results& out) {
+  out.point_names = r.strings("/points/name");
+  const std::size_t np = out.point_names.size();
+  for (std::int64_t b : i64(r, "/points/block", np)) out.point_blocks.push_back(static_cast<int>(b));
+  const std::size_t ns = length(r, "/series/time");
+  const auto time = f64(r, "/series/time", {ns});
+  const auto pos = f64(r, "/series/position", {ns, np, 2});
+  const auto disp = f64(r, "/series/displacement", {ns, np, 2});
+  const auto vel = f64(r, "/series/velocity", {ns, np, 2});
+  const auto stress = f64(r, "/series/stress", {ns, np, 3});
+  out.histories.assign(np, std::vector<MeasurementSample>(ns));
+  for (std::size_t s = 0; s < ns; ++s)
+    for (std::size_t p = 0; p < np; ++p) {
+      MeasurementSample& m = out.histories[p][s];
+      const std::size_t k = s * np + p;
+      m.time = time[s];
+      m.position = Vec2(pos[2 * k], pos[2 * k + 1]);
+      m.displacement = Vec2(disp[2 * k], disp[2 * k + 1]);
+      m.velocity = Vec2(vel[2 * k], vel[2 * k + 1]);
+      m.stress = Vector3d(stress[3 * k], stress[3 * k + 1], stress[3 * k + 2]);
+    }
+}
+
+void read_energy(const h5::Reader& r, Results& out) {
+  const std::size_t n = length(r, "/energy/time");
+  auto col = [&](const char* name) { return f64(r, std::string("/energy/") + name, {n}); };
+  const auto time = col("time"), kinetic = col("kinetic"), elastic = col("elastic"), contact = col("contact"),
+             fixed = col("fixed"), bolts = col("bolts"), gravity = col("gravity_work"), load = col("load_work"),
+             friction = col("friction"), damping = col("damping"), breakage = col("breakage"),
+             residual = col("residual");
+  out.energy.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    EnergyRecord& e = out.energy[i];
+    e.time = time[i];
+    e.kinetic = kinetic[i];
+    e.elastic = elastic[i];
+    e.contact = contact[i];
+    e.fixed = fixed[i];
+    e.bolts = bolts[i];
+    e.gravity_work = gravity[i];
+    e.load_work = load[i];
+    e.friction = friction[i];
+    e.damping = damping[i];
+    e.breakage = breakage[i];
+    e.residual = residual[i];
+  }
+}
+
+void read_bolts(const h5::Reader& r, Results& out) {
+  out.bolt_names = r.strings("/bolts/name");
+  const std::size_t nb = out.bolt_names.size();
+  const std::size_t ns = length(r, "/bolts/time");
+  const auto time = f64(r, "/bolts/time", {ns});
+  const auto force = f64(r, "/bolts/force", {ns, nb});
+  const auto len = f64(r, "/bolts/length", {ns, nb});
+  const auto broken = i64(r, "/bolts/broken", ns * nb);
+  out.bolt_histories.assign(nb, std::vector<BoltSample>(ns));
+  for (std::size_t s = 0; s < ns; ++s)
+    for (std::size_t b = 0; b < nb; ++b)
+      out.bolt_histories[b][s] = {time[s], force[s * nb + b], len[s * nb + b], broken[s * nb + b] != 0};
+}
+
+void read_frames(const h5::Reader& r, Results& out) {
+  std::size_t nv = 0;
+  for (const Block& b : out.blocks.blocks) nv += b.vertices.size();
+  const std::size_t nb = out.blocks.blocks.size();
+  const std::size_t nf = length(r, "/frames/time");
+  const auto step = i64(r, "/frames/step", nf);
+  const auto time = f64(r, "/frames/time", {nf});
+  const auto verts = f64(r, "/frames/vertices", {nf, nv, 2});
+  const auto vel = f64(r, "/frames/velocity", {nf, nb, kDofs});
+  const auto stress = f64(r, "/frames/stress", {nf, nb, 3});
+  out.frames.resize(nf);
+  for (std::size_t f = 0; f < nf; ++f) {
+    Frame& fr = out.frames[f];
+    fr.step = static_cast<int>(step[f]);
+    fr.time = time[f];
+    for (std::size_t v = 0; v < nv; ++v) fr.vertices.emplace_back(verts[2 * (f * nv + v)], verts[2 * (f * nv + v) + 1]);
+    for (std::size_t b = 0; b < nb; ++b) {
+      fr.velocity.push_back(Eigen::Map<const Vector6d>(vel.data() + kDofs * (f * nb + b)));
+      fr.stress.push_back(Eigen::Map<const Vector3d>(stress.data() + 3 * (f * nb + b)));
+    }
+  }
+}
+
+}  // namespace
+
+Frame make_frame(const Simulation& sim) {
+  Frame f;
+  f.step = sim.log().empty() ? 0 : sim.log().back().step;
+  f.time = sim.time();
+  for (const BlockState& b : sim.blocks()) {
+    f.vertices.insert(f.vertices.end(), b.vertices.begin(), b.vertices.end());
+    f.velocity.push_back(b.velocity_end);
+    f.stress.push_back(b.stress);
+  }
+  return f;
+}
+
+void write_results_h5(const std::string& path, const Results& results, const Simulation& sim, bool complete) {
+  AtomicOutput out(path);
+  h5::Writer w(path, out.temp_path());
+  const hid_t root = w.file();
+  const Provenance& p = results.source.provenance;
+  w.attr_text(root, "format", kFormat);
+  w.attr_i32(root, "format_version", kFormatVersion);
+  w.attr_text(root, "units", kUnits);
+  w.attr_text(root, "program_version", p.program_version.empty() ? std::string(version_string()) : p.program_version);
+  w.attr_text(root, "scenario_path", p.scenario_path);
+  w.attr_text(root, "scenario", p.scenario_text);
+  w.attr_u64(root, "seed", p.seed);
+  w.attr_text(root, "created_utc", utc_now());
+  w.attr_text(root, "input_kind", results.source.input_kind);
+  w.attr_text(root, "blocks_path", results.source.blocks_path);
+  w.attr_text(root, "solver", results.solver);
+  w.attr_f64(root, "output_interval", results.output.interval);
+  w.attr_i32(root, "output_every", results.output.every);
+  w.attr_i32(root, "complete", complete ? 1 : 0);
+  w.attr_f64(root, "time", sim.time());
+  w.attr_i32(root, "steps", static_cast<std::int32_t>(sim.log().size()));
+
+  write_model(w, results, sim.model());
+  write_series(w, sim);
+  write_steps(w, sim.log());
+  write_energy(w, sim.energy_log());
+  write_bolts(w, sim);
+  std::size_t nv = 0;
+  for (const BlockState& b : sim.blocks()) nv += b.vertices.size();
+  write_frames(w, results.frames, nv, sim.blocks().size());
+  write_checkpoint(w, sim.state());
+  w.close();
+  out.commit();
+}
+
+Results read_results_h5(const std::string& path, bool with_state) {
+  h5::Reader r(path);
+  const hid_t root = r.file();
+  const auto format = r.attr_text(root, "format", "the file");
+  if (!format) r.fail("has no format attribute, so it was not written by dda (expected a dda-results file)");
+  if (*format != kFormat) r.fail("is a " + *format + " file, expected a dda-results file");
+  const auto version = r.attr_int(root, "format_version", "the file");
+  if (!version || *version > kFormatVersion)
+    r.fail("has results format version " + (version ? std::to_string(*version) : std::string("(none)")) +
+           "; this dda reads version " + std::to_string(kFormatVersion));
+  Results out;
+  Provenance& p = out.source.provenance;
+  p.program_version = r.attr_text(root, "program_version", "the file").value_or("");
+  p.scenario_path = r.attr_text(root, "scenario_path", "the file").value_or("");
+  p.scenario_text = r.attr_text(root, "scenario", "the file").value_or("");
+  p.seed = r.attr_u64(root, "seed", "the file").value_or(0);
+  p.created_utc = r.attr_text(root, "created_utc", "the file").value_or("");
+  out.source.input_kind = r.attr_text(root, "input_kind", "the file").value_or("scenario");
+  out.source.blocks_path = r.attr_text(root, "blocks_path", "the file").value_or("");
+  out.solver = r.attr_text(root, "solver", "the file").value_or("auto");
+  out.output.interval = r.attr_f64(root, "output_interval", "the file").value_or(0);
+  out.output.every = static_cast<int>(r.attr_int(root, "output_every", "the file").value_or(0));
+  out.complete = r.attr_int(root, "complete", "the file").value_or(0) != 0;
+
+  read_series(r, out);
+  read_log(r, out);
+  read_energy(r, out);
+  read_bolts(r, out);
+  if (!with_state) return out;
+  read_model(r, out);
+  read_frames(r, out);
+  std::vector<std::size_t> counts;
+  for (const Block& b : out.blocks.blocks) counts.push_back(b.vertices.size());
+  SimulationState s;
+  read_checkpoint(r, counts, s);
+  s.log = out.log;
+  s.histories = out.histories;
+  s.energy_log = out.energy;
+  s.bolt_histories = out.bolt_histories;
+  out.checkpoint = std::move(s);
+  return out;
+}
+
+}  // namespace dda::df

@@ -1,0 +1,510 @@
+// The forward-run sections of the scenario (materials, joints, loading,
+// fixed, control) into a ModelInput. Keys, units and defaults are documented
+// in docs/scenario.md; keep the two in step.
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <set>
+
+#include "dda/common/error.hpp"
+#include "dda/df/friction.hpp"
+#include "dda/df/scenario.hpp"
+
+namespace dda::df {
+namespace {
+
+const Range kPoisson{-1, 0.5, true, true};
+const Range kUnitOpen{0, 1, true, true};
+
+// A material with the per-block initial values it gives.
+struct MaterialEntry {
+  Material material;
+  Vector3d stress = Vector3d::Zero();  // Pa
+  Vector6d velocity = Vector6d::Zero();
+};
+
+Vector3d triple(const YamlNode& n, const std::string& key, const Vector3d& fallback) {
+  if (!n.has(key)) return fallback;
+  const YamlNode c = n.child(key);
+  const std::vector<double> v = c.as_numbers();
+  if (v.size() != 3) c.fail("must hold three numbers, got " + std::to_string(v.size()));
+  for (double x : v)
+    if (!std::isfinite(x)) c.fail("must hold finite numbers");
+  return {v[0], v[1], v[2]};
+}
+
+MaterialEntry read_material(const YamlNode& n, const MaterialEntry& base) {
+  MaterialEntry e = base;
+  Material& m = e.material;
+  m.density = n.number("density", base.material.density, Range::positive());
+  m.young = n.number("young", base.material.young, Range::positive());
+  m.poisson = n.number("poisson", base.material.poisson, kPoisson);
+  const std::string plane = n.choice("plane", {"stress", "strain"},
+                                     base.material.plane == PlaneMode::Stress ? "stress" : "strain");
+  m.plane = plane == "stress" ? PlaneMode::Stress : PlaneMode::Strain;
+  e.stress = triple(n, "initial_stress", base.stress);
+  const Vector3d v = triple(n, "initial_velocity", base.velocity.head<3>());
+  e.velocity.head<3>() = v;
+  return e;
+}
+
+#define DDA_MATERIAL_KEYS "density", "young", "poisson", "plane", "initial_stress", "initial_velocity"
+
+struct Zone {
+  std::optional<std::pair<int, int>> layers;
+  std::optional<Polygon2> polygon;
+};
+
+Zone read_zone(const YamlNode& z) {
+  Zone out;
+  const std::string which = z.one_of({"layers", "polygon"});
+  if (which == "layers") {
+    const YamlNode l = z.child("layers");
+    const std::vector<double> v = l.as_numbers();
+    if (v.size() != 2) l.fail("must be [first, last] (two bed indices), got " + std::to_string(v.size()) + " numbers");
+    for (double x : v)
+      if (x != std::floor(x) || x < 0) l.fail("must hold whole numbers >= 0 (bed indices, 0 = lowest bed)");
+    if (v[1] < v[0]) l.fail("must be [first, last] with first <= last");
+    out.layers = std::make_pair(static_cast<int>(v[0]), static_cast<int>(v[1]));
+  } else {
+    out.polygon = z.polygon("polygon");
+    make_counter_clockwise(*out.polygon);
+  }
+  return out;
+}
+
+JointProperties read_joint(const YamlNode& n, const JointProperties& base) {
+  JointProperties j = base;
+  j.friction_deg = n.number("friction_deg", base.friction_deg, Range::half_open(0, 90));
+  j.cohesion = n.number("cohesion", base.cohesion, Range::non_negative());
+  j.tensile_strength = n.number("tensile_strength", base.tensile_strength, Range::non_negative());
+  if (n.has("normal_penalty")) j.normal_penalty = n.number("normal_penalty", Range::positive());
+  if (n.has("shear_penalty")) j.shear_penalty = n.number("shear_penalty", Range::positive());
+  j.friction_law = n.text("friction_law", base.friction_law);
+  try {
+    make_friction_law(j);
+  } catch (const InputError& e) {
+    n.fail_key("friction_law", std::string("is not usable: ") + e.what());
+  }
+  return j;
+}
+
+#define DDA_JOINT_KEYS "friction_deg", "cohesion", "tensile_strength", "normal_penalty", "shear_penalty", "friction_law"
+
+// Names of the keys of a top-level mapping section, in file order.
+std::vector<std::string> section_keys(const YamlNode& root, const std::string& section) {
+  std::vector<std::string> keys;
+  const YAML::Node doc = YAML::Load(root.source_text());
+  const YAML::Node s = doc[section];
+  if (!s || !s.IsMap()) return keys;
+  for (auto it = s.begin(); it != s.end(); ++it) keys.push_back(it->first.Scalar());
+  return keys;
+}
+
+std::string join(const std::vector<std::string>& v) {
+  std::string s;
+  for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + v[i];
+  return s.empty() ? "none" : s;
+}
+
+// The item of the scenario's `points` list with this name, if any.
+std::optional<YamlNode> scenario_point(const YamlNode& root, const std::string& name) {
+  if (!root.has("points")) return std::nullopt;
+  for (const YamlNode& p : root.list("points"))
+    if (p.is_map() && p.has("name") && p.child("name").is_scalar() && p.child("name").as_text() == name) return p;
+  return std::nullopt;
+}
+
+Vec2 vector2(const YamlNode& n, const std::string& key) {
+  const Vec2 v = n.point(key);
+  if (!std::isfinite(v.x()) || !std::isfinite(v.y())) n.fail_key(key, "must hold finite numbers");
+  return v;
+}
+
+// A table [[t, a, b], ...] with t strictly increasing.
+TimeHistory read_table(const YamlNode& n, const std::string& key) {
+  TimeHistory h;
+  const std::vector<YamlNode> rows = n.list(key);
+  if (rows.empty()) n.fail_key(key, "must hold at least one row [t, x, y]");
+  for (const YamlNode& row : rows) {
+    const std::vector<double> v = row.as_numbers();
+    if (v.size() != 3) row.fail("must be a row [t, x, y] of three numbers, got " + std::to_string(v.size()));
+    for (double x : v)
+      if (!std::isfinite(x)) row.fail("must hold finite numbers");
+    if (!h.t.empty() && v[0] <= h.t.back())
+      row.fail("must come later than the row before it (times must increase), got t = " + std::to_string(v[0]));
+    h.t.push_back(v[0]);
+    h.value.emplace_back(v[1], v[2]);
+  }
+  return h;
+}
+
+struct Parsed {
+  std::vector<MaterialEntry> materials;
+  std::vector<Zone> zones;             // zone k uses materials[k + 1]
+  JointProperties default_joint;
+  std::vector<std::pair<std::string, JointProperties>> joint_sets;  // by name, in file order
+  std::vector<std::pair<YamlNode, std::string>> joint_nodes;        // node of each named set
+  Vec2 gravity{0, -9.81};
+  struct Load {
+    YamlNode node;
+    std::string point;
+    Vec2 force{0, 0};
+    std::optional<TimeHistory> history;
+  };
+  std::vector<Load> loads;
+  struct Fix {
+    YamlNode node;
+    std::string point;
+    std::optional<double> penalty;
+    std::optional<TimeHistory> displacement;
+  };
+  std::vector<std::pair<YamlNode, Bolt>> bolts;
+  std::vector<Fix> fixes;
+  std::vector<std::string> fixed_sides;
+  std::optional<YamlNode> fixed_boundary_node;
+  Control control;
+  OutputSchedule output;
+};
+
+Parsed parse(const YamlNode& root) {
+  Parsed p;
+  // materials
+  MaterialEntry base;
+  base.material.plane = PlaneMode::Strain;
+  if (auto m = root.optional_child("materials")) {
+    m->allow({"default", "zones"});
+    if (auto d = m->optional_child("default")) {
+      d->allow({DDA_MATERIAL_KEYS});
+      base = read_material(*d, base);
+    }
+    p.materials.push_back(base);
+    for (const YamlNode& z : m->list_or_empty("zones")) {
+      z.allow({DDA_MATERIAL_KEYS, "layers", "polygon"});
+      p.zones.push_back(read_zone(z));
+      p.materials.push_back(read_material(z, base));
+    }
+  } else {
+    p.materials.push_back(base);
+  }
+
+  // joints
+  if (auto j = root.optional_child("joints")) {
+    if (!j->is_map()) j->fail("must be a mapping of joint set names (and default) to joint properties");
+    if (auto d = j->optional_child("default")) {
+      d->allow({DDA_JOINT_KEYS});
+      p.default_joint = read_joint(*d, p.default_joint);
+    }
+    for (const std::string& name : section_keys(root, "joints")) {
+      if (name == "default") continue;
+      const YamlNode n = j->child(name);
+      bool given = false;
+      for (const char* k : {DDA_JOINT_KEYS}) given = given || n.has(k);
+      if (!given) {
+        if (n.is_map()) n.allow({DDA_JOINT_KEYS});
+        n.fail("gives no joint properties (give at least one of friction_deg, cohesion, tensile_strength, "
+               "normal_penalty, shear_penalty, friction_law)");
+      }
+      n.allow({DDA_JOINT_KEYS});
+      p.joint_sets.emplace_back(name, read_joint(n, p.default_joint));
+      p.joint_nodes.emplace_back(n, name);
+    }
+  }
+
+  // loading
+  if (auto l = root.optional_child("loading")) {
+    l->allow({"gravity", "point_loads"});
+    if (l->has("gravity")) {
+      const YamlNode g = l->child("gravity");
+      if (g.is_sequence())
+        p.gravity = vector2(*l, "gravity");
+      else
+        p.gravity = Vec2(0, -g.as_number(Range::non_negative()));
+    }
+    for (const YamlNode& item : l->list_or_empty("point_loads")) {
+      item.allow({"point", "force", "history"});
+      Parsed::Load load{item, item.text("point"), Vec2(0, 0), std::nullopt};
+      if (item.one_of({"force", "history"}) == "force")
+        load.force = vector2(item, "force");
+      else
+        load.history = read_table(item, "history");
+      p.loads.push_back(load);
+    }
+  }
+
+  // fixed
+  if (auto f = root.optional_child("fixed")) {
+    f->allow({"boundary", "points"});
+    if (f->has("boundary")) {
+      p.fixed_boundary_node = f->child("boundary");
+      for (const YamlNode& s : f->list("boundary")) {
+        const std::string side = s.as_text();
+        if (side != "bottom" && side != "top" && side != "left" && side != "right")
+          s.fail("must be bottom, top, left or right, got '" + side + "'");
+        p.fixed_sides.push_back(side);
+      }
+    }
+    for (const YamlNode& item : f->list_or_empty("points")) {
+      item.allow({"point", "penalty", "displacement"});
+      Parsed::Fix fix{item, item.text("point"), std::nullopt, std::nullopt};
+      if (item.has("penalty")) fix.penalty = item.number("penalty", Range::positive());
+      if (item.has("displacement")) fix.displacement = read_table(item, "displacement");
+      p.fixes.push_back(fix);
+    }
+  }
+
+  // bolts
+  std::set<std::string> bolt_names;
+  for (const YamlNode& item : root.list_or_empty("bolts")) {
+    item.allow({"name", "from", "to", "stiffness", "pretension", "breaking_force"});
+    Bolt b;
+    b.name = item.text("name", "bolt" + std::to_string(p.bolts.size() + 1));
+    if (!bolt_names.insert(b.name).second) item.fail_key("name", "repeats the bolt name '" + b.name + "'");
+    b.anchor = vector2(item, "from");
+    b.head = vector2(item, "to");
+    if (b.anchor == b.head) item.fail_key("to", "must differ from `from` (the bolt has zero length)");
+    b.stiffness = item.number("stiffness", Range::positive());
+    b.pretension = item.number("pretension", 0, Range::non_negative());
+    if (item.has("breaking_force")) b.breaking_force = item.number("breaking_force", Range::positive());
+    p.bolts.emplace_back(item, b);
+  }
+
+  // control
+  const YamlNode c = root.child("control");
+  c.allow({"dt", "total_time", "steps", "max_displacement_ratio", "w0", "dynamic", "max_open_close",
+           "penalty_factor", "shear_ratio", "fixed_penalty_factor", "min_dt_ratio", "solver", "output_interval",
+           "output_every", "initial_equilibrium"});
+  Control& ctl = p.control;
+  ctl.dt = c.number("dt", Range::positive());
+  if (c.one_of({"total_time", "steps"}) == "total_time")
+    ctl.total_time = c.number("total_time", Range::positive());
+  else
+    ctl.steps = static_cast<int>(c.integer("steps", Range::closed(1, 1e9)));
+  ctl.max_displacement_ratio = c.number("max_displacement_ratio", ctl.max_displacement_ratio, kUnitOpen);
+  if (c.has("w0")) ctl.w0 = c.number("w0", Range::positive());
+  ctl.dynamic = c.number("dynamic", ctl.dynamic, Range::closed(0, 1));
+  ctl.max_open_close = static_cast<int>(c.integer("max_open_close", ctl.max_open_close, Range::closed(1, 1000)));
+  ctl.penalty_factor = c.number("penalty_factor", ctl.penalty_factor, Range::positive());
+  ctl.shear_ratio = c.number("shear_ratio", ctl.shear_ratio, Range::positive());
+  ctl.fixed_penalty_factor = c.number("fixed_penalty_factor", ctl.fixed_penalty_factor, Range::positive());
+  ctl.min_dt_ratio = c.number("min_dt_ratio", ctl.min_dt_ratio, Range{0, 1, true, false});
+  ctl.solver = c.choice("solver", {"auto", "cholmod", "pcg"}, "auto");
+  ctl.initial_equilibrium = c.flag("initial_equilibrium", false);
+  if (c.has("output_interval") && c.has("output_every"))
+    c.fail_key("output_every", "cannot be given together with output_interval (give one)");
+  if (c.has("output_interval")) p.output.interval = c.number("output_interval", Range::positive());
+  if (c.has("output_every")) p.output.every = static_cast<int>(c.integer("output_every", Range::closed(1, 1e9)));
+  return p;
+}
+
+bool has_any_df_section(const YamlNode& root) {
+  for (const char* k : {"materials", "joints", "loading", "fixed", "bolts", "control"})
+    if (root.has(k)) return true;
+  return false;
+}
+
+// Fixed points at both ends of every domain-boundary edge on the given sides
+// of the blocks' bounding box.
+void add_boundary_fixes(const BlockModel& blocks, const std::vector<std::string>& sides, ModelInput& in) {
+  double x0 = std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0;
+  for (const Block& b : blocks.blocks)
+    for (const Vec2& v : b.vertices) {
+      x0 = std::min(x0, v.x()), x1 = std::max(x1, v.x());
+      y0 = std::min(y0, v.y()), y1 = std::max(y1, v.y());
+    }
+  const double tol = 1e-9 * std::max(x1 - x0, y1 - y0);
+  for (const std::string& side : sides) {
+    auto on = [&](const Vec2& v) {
+      if (side == "bottom") return std::abs(v.y() - y0) <= tol;
+      if (side == "top") return std::abs(v.y() - y1) <= tol;
+      if (side == "left") return std::abs(v.x() - x0) <= tol;
+      return std::abs(v.x() - x1) <= tol;
+    };
+    for (std::size_t b = 0; b < blocks.blocks.size(); ++b) {
+      const Block& blk = blocks.blocks[b];
+      const std::size_t n = blk.vertices.size();
+      std::set<std::size_t> fixed_vertices;
+      for (std::size_t k = 0; k < n; ++k) {
+        const Vec2& a = blk.vertices[k];
+        const Vec2& c = blk.vertices[(k + 1) % n];
+        const bool boundary = blk.edge_set.size() != n || blk.edge_set[k] == kBoundarySet;
+        if (boundary && on(a) && on(c)) {
+          fixed_vertices.insert(k);
+          fixed_vertices.insert((k + 1) % n);
+        }
+      }
+      for (std::size_t k : fixed_vertices)
+        in.fixed_points.push_back({"boundary_" + side + "_" + std::to_string(b) + "_" + std::to_string(k),
+                                   blk.vertices[k], static_cast<int>(b), std::nullopt});
+    }
+  }
+}
+
+}  // namespace
+
+bool scenario_has_df(const YamlNode& root) { return root.has("control"); }
+
+void check_df_scenario(const YamlNode& root) {
+  if (!has_any_df_section(root)) return;
+  if (!root.has("control"))
+    root.fail_key("control", "is required for a forward run (the scenario has materials, joints, loading or fixed)");
+  parse(root);
+}
+
+void check_blocks_for_df(const BlockModel& blocks, const std::string& blocks_path,
+                         const std::optional<YamlNode>& root) {
+  if (blocks.blocks.empty())
+    throw InputError(blocks_path + ": has no blocks, so there is nothing to run (did the excavations remove "
+                                   "everything, or do the lines enclose no area?).");
+  for (const LocatedPoint& lp : blocks.points) {
+    if (lp.point.kind == PointKind::Hole || lp.block >= 0) continue;
+    const std::string what = std::string(to_string(lp.point.kind)) + " point '" + lp.point.name + "'";
+    if (root) {
+      if (auto n = scenario_point(*root, lp.point.name)) n->fail_key("at", "(" + what + ") lies outside every block");
+      if (root->has("geometry"))
+        root->child("geometry").fail("holds the " + what + ", which lies outside every block");
+    }
+    throw InputError(blocks_path + ": the " + what + " at (" + std::to_string(lp.point.p.x()) + ", " +
+                     std::to_string(lp.point.p.y()) + ") lies outside every block.");
+  }
+}
+
+DfScenario read_df_scenario(const YamlNode& root, const BlockModel& blocks, const std::string& blocks_path) {
+  if (!root.has("control"))
+    root.fail_key("control", "is required for a forward run (it gives the time step and the run length)");
+  const Parsed p = parse(root);
+  check_blocks_for_df(blocks, blocks_path, root);
+
+  DfScenario out;
+  ModelInput& in = out.input;
+  in.geometry = blocks;
+  in.control = p.control;
+  in.gravity = p.gravity;
+  out.output = p.output;
+
+  // Materials: the first zone a block's centroid (or bed) falls in, else the default.
+  in.materials.clear();
+  for (const MaterialEntry& e : p.materials) in.materials.push_back(e.material);
+  const std::vector<YamlNode> zone_nodes =
+      root.has("materials") ? root.child("materials").list_or_empty("zones") : std::vector<YamlNode>{};
+  std::vector<int> zone_blocks(p.zones.size(), 0);
+  in.block_material.assign(blocks.blocks.size(), 0);
+  for (std::size_t b = 0; b < blocks.blocks.size(); ++b) {
+    const Block& blk = blocks.blocks[b];
+    for (std::size_t z = 0; z < p.zones.size(); ++z) {
+      const Zone& zone = p.zones[z];
+      const bool inside = zone.layers ? (blk.layer >= zone.layers->first && blk.layer <= zone.layers->second)
+                                      : point_in_polygon(*zone.polygon, blk.centroid);
+      if (inside) {
+        in.block_material[b] = static_cast<int>(z + 1);
+        ++zone_blocks[z];
+        break;
+      }
+    }
+  }
+  for (std::size_t z = 0; z < p.zones.size(); ++z) {
+    if (p.zones[z].layers && blocks.layers.empty())
+      zone_nodes[z].fail_key("layers", "selects beds, but the blocks are not layered");
+    if (zone_blocks[z] == 0)
+      zone_nodes[z].fail("selects no block (check its " + std::string(p.zones[z].layers ? "layers" : "polygon") +
+                         ")");
+  }
+  bool any_initial = false;
+  for (const MaterialEntry& e : p.materials) any_initial = any_initial || !e.stress.isZero() || !e.velocity.isZero();
+  if (any_initial) {
+    for (std::size_t b = 0; b < blocks.blocks.size(); ++b) {
+      in.initial_stress.push_back(p.materials[in.block_material[b]].stress);
+      in.initial_velocity.push_back(p.materials[in.block_material[b]].velocity);
+    }
+  }
+
+  // Joints: one entry per joint set of the blocks file, named ones from the
+  // scenario, the rest (and boundary, excavation, artificial edges) default.
+  std::vector<std::string> set_names;
+  for (const JointSetInfo& s : blocks.sets) set_names.push_back(s.name);
+  in.default_joint = p.default_joint;
+  in.joint_sets.assign(blocks.sets.size(), p.default_joint);
+  for (std::size_t k = 0; k < p.joint_sets.size(); ++k) {
+    const auto it = std::find(set_names.begin(), set_names.end(), p.joint_sets[k].first);
+    if (it == set_names.end())
+      p.joint_nodes[k].first.fail("names a joint set that " + blocks_path + " does not have (its sets are " +
+                                  join(set_names) + ")");
+    in.joint_sets[static_cast<std::size_t>(it - set_names.begin())] = p.joint_sets[k].second;
+  }
+
+  // Points: every fixed and measurement point of the blocks file; load
+  // points take their force from loading.point_loads.
+  std::map<std::string, Vec2> forces;
+  std::set<std::string> load_points, fixed_points;
+  for (const LocatedPoint& lp : blocks.points) {
+    if (lp.point.kind == PointKind::Load) load_points.insert(lp.point.name);
+    if (lp.point.kind == PointKind::Fixed) fixed_points.insert(lp.point.name);
+  }
+  for (const Parsed::Load& l : p.loads) {
+    if (!load_points.count(l.point))
+      l.node.fail_key("point", "names '" + l.point + "', which is not a load point of " + blocks_path +
+                                   " (its load points are " +
+                                   join(std::vector<std::string>(load_points.begin(), load_points.end())) + ")");
+    if (forces.count(l.point)) l.node.fail_key("point", "gives a second load for point '" + l.point + "'");
+    forces[l.point] = l.force;
+  }
+  for (const std::string& name : load_points)
+    if (!forces.count(name)) {
+      const std::string msg = "has no entry for load point '" + name + "' (add {point: " + name + ", force: [fx, fy]})";
+      if (root.has("loading")) root.child("loading").fail_key("point_loads", msg);
+      root.fail_key("loading", "is required: load point '" + name + "' needs a force in loading.point_loads");
+    }
+  add_points_from_block_model(blocks, forces, in);
+  for (const Parsed::Load& l : p.loads)
+    for (PointLoad& pl : in.loads)
+      if (pl.name == l.point) pl.history = l.history;
+  std::set<std::string> seen;
+  for (const Parsed::Fix& f : p.fixes) {
+    if (!fixed_points.count(f.point))
+      f.node.fail_key("point", "names '" + f.point + "', which is not a fixed point of " + blocks_path +
+                                   " (its fixed points are " +
+                                   join(std::vector<std::string>(fixed_points.begin(), fixed_points.end())) + ")");
+    if (!seen.insert(f.point).second) f.node.fail_key("point", "names fixed point '" + f.point + "' a second time");
+    for (FixedPoint& fp : in.fixed_points)
+      if (fp.name == f.point) fp.penalty = f.penalty, fp.history = f.displacement;
+  }
+  add_boundary_fixes(blocks, p.fixed_sides, in);
+  if (!p.fixed_sides.empty() && in.fixed_points.empty() && p.fixed_boundary_node)
+    p.fixed_boundary_node->fail("fixes nothing: no block has a domain-boundary edge on those sides");
+
+  // Bolts: both ends must lie in blocks, and in different ones.
+  for (const auto& [node, bolt] : p.bolts) {
+    int ends[2] = {-1, -1};
+    const char* keys[2] = {"from", "to"};
+    const Vec2 pts[2] = {bolt.anchor, bolt.head};
+    for (int e = 0; e < 2; ++e) {
+      for (std::size_t b = 0; b < blocks.blocks.size() && ends[e] < 0; ++b)
+        if (point_in_polygon(blocks.blocks[b].vertices, pts[e])) ends[e] = static_cast<int>(b);
+      if (ends[e] < 0) node.fail_key(keys[e], "lies outside every block");
+    }
+    if (ends[0] == ends[1]) node.fail_key("to", "lies in the same block as `from` (a bolt must join two blocks)");
+    in.bolts.push_back(bolt);
+  }
+
+  // Anything build_model still refuses is a scenario problem of the whole run.
+  try {
+    build_model(in);
+  } catch (const InputError& e) {
+    throw InputError(root.file() + ": " + e.what());
+  }
+  return out;
+}
+
+OutputSchedule resolve_output_schedule(OutputSchedule s, const Control& control) {
+  if (s.interval > 0 || s.every > 0) return s;
+  if (control.total_time > 0)
+    s.interval = control.total_time / 20;
+  else
+    s.every = std::max(1, control.steps / 20);
+  return s;
+}
+
+}  // namespace dda::df

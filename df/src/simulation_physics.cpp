@@ -1,0 +1,133 @@
+// Physics extensions of the time stepper: bolts and the energy ledger
+// (members of Simulation kept out of simulation.cpp, which is shared).
+#include <Eigen/Cholesky>
+#include <cmath>
+
+#include "dda/df/simulation.hpp"
+
+namespace dda::df {
+namespace {
+
+double strain_energy(const BlockState& b, const Matrix3d& emat) {
+  return 0.5 * b.geometry.area * b.stress.dot(emat.ldlt().solve(b.stress));
+}
+
+}  // namespace
+
+void Simulation::init_physics() {
+  // Called by the constructor (bolts in their initial state) and again after
+  // settling into equilibrium (bolts as settled): the histories and the
+  // energy ledger start afresh from the current state.
+  if (bolts_.size() != model_.bolts.size())
+    for (const Bolt& b : model_.bolts) bolts_.push_back(initial_bolt_state(b));
+  bolt_histories_.assign(model_.bolts.size(), {});
+  for (std::size_t k = 0; k < bolts_.size(); ++k) {
+    const BoltState& s = bolts_[k];
+    bolt_histories_[k].push_back({time_, s.force, (s.head - s.anchor).norm(), s.broken});
+  }
+  // Stored energy of the starting state; the work sums start at zero.
+  EnergyRecord e;
+  e.time = time_;
+  for (int i = 0; i < model_.block_count(); ++i) {
+    const BlockState& b = blocks_[i];
+    const int mat = model_.block_material[i];
+    e.kinetic += 0.5 * b.velocity.dot(mass_matrix(b.geometry, model_.materials[mat].density) * b.velocity);
+    e.elastic += strain_energy(b, emat_[mat]);
+  }
+  for (const Contact& c : contacts_) {
+    if (c.state == ContactState::Open) continue;
+    e.contact += c.normal_force * c.normal_force / (2 * model_.joint_pn[c.joint]);
+    if (c.state == ContactState::Locked) e.contact += c.shear_force * c.shear_force / (2 * model_.joint_ps[c.joint]);
+  }
+  for (std::size_t k = 0; k < model_.fixed_points.size(); ++k) {
+    const FixedPoint& f = model_.fixed_points[k];
+    e.fixed += 0.5 * *f.penalty * (fixed_point_target(f, fixed_anchor_[k], time_) - fixed_pos_[k]).squaredNorm();
+  }
+  for (std::size_t k = 0; k < bolts_.size(); ++k) e.bolts += bolt_energy(model_.bolts[k], bolts_[k]);
+  energy_start_ = e;
+  energy_log_.assign(1, e);
+}
+
+void Simulation::assemble_physics(double /*dt*/) {
+  for (std::size_t k = 0; k < bolts_.size(); ++k) {
+    const Bolt& b = model_.bolts[k];
+    add_bolt_terms(b, bolts_[k], blocks_[b.anchor_block].geometry.centroid, blocks_[b.head_block].geometry.centroid,
+                   system_);
+  }
+}
+
+void Simulation::before_accept(double dt, const Eigen::VectorXd& d, const std::vector<Contact>& contacts) {
+  // Work and losses of the step, from the configuration at its start. Every
+  // force term is taken exactly as assembled (F . T d), so that for a block
+  // without contacts the change of kinetic energy equals the work done.
+  EnergyRecord e = energy_log_.back();
+  auto di = [&](int i) { return Vector6d(d.segment<kDofs>(kDofs * i)); };
+  for (int i = 0; i < model_.block_count(); ++i) {
+    const BlockState& b = blocks_[i];
+    const Material& mat = model_.materials[model_.block_material[i]];
+    const Vector6d v1 = 2.0 / dt * di(i) - b.velocity;
+    const double k = model_.control.dynamic;
+    e.damping += (1 - k * k) * 0.5 * v1.dot(mass_matrix(b.geometry, mat.density) * v1);
+    e.gravity_work += b.geometry.area * mat.density * model_.gravity.dot(di(i).head<2>());
+  }
+  for (std::size_t k = 0; k < model_.loads.size(); ++k) {
+    const PointLoad& l = model_.loads[k];
+    const Vec2 u = t_matrix(blocks_[l.block].geometry.centroid, load_pos_[k]) * di(l.block);
+    e.load_work += load_force(l, time_, time_ + dt).dot(u);
+  }
+  for (std::size_t k = 0; k < model_.fixed_points.size(); ++k) {
+    // A moving fixed point does work on its spring: the change of the
+    // spring's energy plus the work the spring does on the block.
+    const FixedPoint& f = model_.fixed_points[k];
+    const Vec2 u = t_matrix(blocks_[f.block].geometry.centroid, fixed_pos_[k]) * di(f.block);
+    const Vec2 gap0 = fixed_point_target(f, fixed_anchor_[k], time_) - fixed_pos_[k];
+    const Vec2 gap1 = fixed_point_target(f, fixed_anchor_[k], time_ + dt) - fixed_pos_[k] - u;
+    const double p = *f.penalty;
+    e.load_work += 0.5 * p * (gap1.squaredNorm() - gap0.squaredNorm()) + p * gap1.dot(u);
+  }
+  for (const Contact& c : contacts) {
+    if (c.state != ContactState::Sliding) continue;
+    const double slip = c.geo.es.dot(di(c.vblock)) + c.geo.gc.dot(di(c.eblock));
+    e.friction += std::abs(c.shear_force * slip);
+  }
+  for (std::size_t k = 0; k < bolts_.size(); ++k) {
+    const Bolt& b = model_.bolts[k];
+    BoltState& s = bolts_[k];
+    const Vec2 ca = blocks_[b.anchor_block].geometry.centroid, ch = blocks_[b.head_block].geometry.centroid;
+    if (advance_bolt(b, s, ca, di(b.anchor_block), ch, di(b.head_block))) {
+      const double t = b.pretension + b.stiffness * ((s.head - s.anchor).norm() - s.rest_length);
+      e.breakage += t * t / (2 * b.stiffness);
+    }
+  }
+  energy_log_.push_back(e);
+}
+
+void Simulation::after_accept(double /*dt*/) {
+  for (std::size_t k = 0; k < bolts_.size(); ++k) {
+    const BoltState& s = bolts_[k];
+    bolt_histories_[k].push_back({time_, s.force, (s.head - s.anchor).norm(), s.broken});
+  }
+  // Stored energy at the end of the step.
+  EnergyRecord& e = energy_log_.back();
+  e.time = time_;
+  e.kinetic = e.elastic = e.contact = e.fixed = e.bolts = 0;
+  for (int i = 0; i < model_.block_count(); ++i) {
+    const BlockState& b = blocks_[i];
+    const int mat = model_.block_material[i];
+    e.kinetic += 0.5 * b.velocity.dot(mass_matrix(b.geometry, model_.materials[mat].density) * b.velocity);
+    e.elastic += strain_energy(b, emat_[mat]);
+  }
+  for (const Contact& c : contacts_) {
+    if (c.state == ContactState::Open) continue;
+    e.contact += c.normal_force * c.normal_force / (2 * model_.joint_pn[c.joint]);
+    if (c.state == ContactState::Locked) e.contact += c.shear_force * c.shear_force / (2 * model_.joint_ps[c.joint]);
+  }
+  for (std::size_t k = 0; k < model_.fixed_points.size(); ++k) {
+    const FixedPoint& f = model_.fixed_points[k];
+    e.fixed += 0.5 * *f.penalty * (fixed_point_target(f, fixed_anchor_[k], time_) - fixed_pos_[k]).squaredNorm();
+  }
+  for (std::size_t k = 0; k < bolts_.size(); ++k) e.bolts += bolt_energy(model_.bolts[k], bolts_[k]);
+  e.residual = e.input() - (e.stored() - energy_start_.stored()) - e.friction - e.damping - e.breakage;
+}
+
+}  // namespace dda::df

@@ -1,0 +1,210 @@
+// The PCG step solver against CHOLMOD, the automatic choice, the fallback,
+// CHOLMOD's analysis reuse over a run, and the declared-pattern block system.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "df_test_models.hpp"
+#include "dda/common/error.hpp"
+#include "dda/df/block_system.hpp"
+#include "dda/df/linear_solver.hpp"
+#include "dda/df/simulation.hpp"
+
+namespace dda::df {
+namespace {
+
+// A brick wall (running bond, bricks 1 x 0.5 m) of `rows` x `cols` on a
+// base held by three fixed points, under gravity: a contact-rich model.
+ModelInput brick_wall(int rows, int cols, const std::string& solver = "auto") {
+  ModelInput in;
+  in.geometry.blocks.push_back(test::make_block(test::rectangle(-1, -1, cols + 3, 1)));
+  for (int r = 0; r < rows; ++r)
+    for (int c = 0; c < cols; ++c)
+      in.geometry.blocks.push_back(test::make_block(test::rectangle(c + 0.5 * (r % 2), 0.5 * r, 1, 0.5)));
+  in.materials = {test::rock(2600, 5e9)};
+  JointProperties j;
+  j.friction_deg = 35;
+  in.joint_sets = {j};
+  in.control.dt = 1e-3;
+  in.control.w0 = 1.0;
+  in.control.solver = solver;
+  for (const double x : {-0.5, 0.5 * cols, cols + 1.5}) in.fixed_points.push_back({"base", Vec2(x, -0.5), 0, {}});
+  return in;
+}
+
+// Solves every step system with CHOLMOD (its answer drives the run) and
+// with PCG, and records how far apart they are.
+class ComparingSolver final : public LinearSolver {
+ public:
+  std::string name() const override { return "compare"; }
+  int analyses() const override { return direct_->analyses(); }
+  Eigen::VectorXd solve(const Eigen::SparseMatrix<double>& lower, const Eigen::VectorXd& b) override {
+    return direct_->solve(lower, b);
+  }
+  Eigen::VectorXd solve_step(const BlockSystem& sys, double dt) override {
+    const Eigen::VectorXd x = direct_->solve_step(sys, dt);
+    const Eigen::VectorXd y = pcg_->solve_step(sys, dt);
+    if (x.norm() > 0) worst = std::max(worst, (x - y).norm() / x.norm());
+    ++compared;
+    return x;
+  }
+  double worst = 0;
+  int compared = 0;
+  std::unique_ptr<LinearSolver> direct_ = make_cholmod_solver(), pcg_ = make_pcg_solver();
+};
+
+TEST(SolverPcg, AgreesWithCholmodOnAssembledContactSystems) {
+  auto compare = std::make_unique<ComparingSolver>();
+  ComparingSolver* c = compare.get();
+  Simulation sim(build_model(brick_wall(6, 8)), std::move(compare));
+  for (int s = 0; s < 20; ++s) sim.step();
+  EXPECT_GT(sim.contacts().size(), 150u);
+  EXPECT_GE(c->compared, 20);
+  EXPECT_LE(c->worst, 1e-8);
+  const SolverStats st = c->pcg_->stats();
+  EXPECT_EQ(st.fallbacks, 0);
+  std::printf("PCG vs CHOLMOD: %d systems, worst relative difference %.2e, %.1f PCG iterations per solve\n",
+              c->compared, c->worst, static_cast<double>(st.pcg_iterations) / st.pcg_solves);
+}
+
+TEST(SolverPcg, GenericPathMatchesCholmod) {
+  // A chain of random SPD 6x6 blocks through the CSC interface.
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1, 1);
+  const int n = 30;
+  BlockSystem sys(n);
+  for (int i = 0; i < n; ++i) {
+    Matrix6d a = Matrix6d::NullaryExpr([&] { return u(rng); });
+    sys.diagonal(i) += a * a.transpose() + 30 * Matrix6d::Identity();
+    for (int r = 0; r < 6; ++r) sys.rhs(i)[r] = u(rng);
+    if (i > 0) sys.add_coupling(i, i - 1, Matrix6d::NullaryExpr([&] { return u(rng); }));
+  }
+  const Eigen::VectorXd x = make_cholmod_solver()->solve(sys.lower(), sys.rhs());
+  const auto pcg = make_pcg_solver();
+  const Eigen::VectorXd y = pcg->solve(sys.lower(), sys.rhs());
+  EXPECT_LE((x - y).norm(), 1e-9 * x.norm());
+  EXPECT_EQ(pcg->stats().pcg_solves, 1);
+}
+
+TEST(SolverPcg, FallsBackToCholmodWhenItDoesNotConverge) {
+  ModelInput in = brick_wall(3, 4);
+  PcgOptions o;  // never converges (short of an exact zero residual)
+  o.tolerance = 0;
+  o.max_iterations = 1;
+  Simulation sim(build_model(in), make_pcg_solver(o));
+  Simulation ref(build_model(in), make_cholmod_solver());
+  for (int s = 0; s < 3; ++s) {
+    sim.step();
+    ref.step();
+  }
+  const SolverStats st = sim.solver().stats();
+  EXPECT_GT(st.fallbacks, 0);
+  EXPECT_EQ(st.fallbacks, st.factorizations);
+  for (int i = 0; i < sim.model().block_count(); ++i)
+    EXPECT_EQ(sim.blocks()[i].geometry.centroid, ref.blocks()[i].geometry.centroid);
+}
+
+TEST(SolverPcg, AutoChoosesBySizeAndTheUserCanForceEither) {
+  EXPECT_EQ(Simulation(build_model(brick_wall(2, 2))).solver().name(), "auto");
+  EXPECT_EQ(Simulation(build_model(brick_wall(2, 2, "pcg"))).solver().name(), "pcg");
+  EXPECT_EQ(Simulation(build_model(brick_wall(2, 2, "cholmod"))).solver().name(), "cholmod");
+  EXPECT_THROW(make_solver("lu"), InputError);
+
+  // 13 blocks: CHOLMOD below a threshold of 14, PCG from 13.
+  for (const int threshold : {14, 13}) {
+    Simulation sim(build_model(brick_wall(3, 4)), make_solver("auto", threshold));
+    sim.step();
+    const SolverStats st = sim.solver().stats();
+    EXPECT_EQ(st.pcg_solves > 0, threshold == 13);
+    EXPECT_EQ(st.factorizations > 0, threshold == 14);
+  }
+}
+
+TEST(SolverPcg, WarmStartCutsIterations) {
+  // The second and later steps start from the scaled last solution.
+  Simulation sim(build_model(brick_wall(4, 6, "pcg")));
+  sim.step();
+  const SolverStats first = sim.solver().stats();
+  for (int s = 0; s < 5; ++s) sim.step();
+  const SolverStats later = sim.solver().stats();
+  const double per_solve_first = static_cast<double>(first.pcg_iterations) / first.pcg_solves;
+  const double per_solve_later = static_cast<double>(later.pcg_iterations - first.pcg_iterations) /
+                                 (later.pcg_solves - first.pcg_solves);
+  std::printf("PCG iterations per solve: first step %.1f, later %.1f\n", per_solve_first, per_solve_later);
+  EXPECT_LT(per_solve_later, per_solve_first);
+  EXPECT_EQ(later.fallbacks, 0);
+}
+
+TEST(SolverCholmod, AnalysisIsReusedOverARun) {
+  Simulation sim(build_model(brick_wall(5, 6, "cholmod")));
+  for (int s = 0; s < 30; ++s) sim.step();
+  const SolverStats st = sim.solver().stats();
+  std::printf("CHOLMOD over 30 steps: %ld analyses, %ld factorisations, ordering %s\n", st.analyses,
+              st.factorizations, st.ordering.c_str());
+  EXPECT_GE(st.factorizations, 30);
+  EXPECT_LE(st.analyses * 5, st.factorizations);
+  EXPECT_FALSE(st.ordering.empty());
+}
+
+TEST(BlockSystemPattern, CouplingsOutsideThePatternAndProductsAgree) {
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-1, 1);
+  auto random6 = [&] { return Matrix6d(Matrix6d::NullaryExpr([&] { return u(rng); })); };
+  BlockSystem sys;
+  sys.reset(5, {{0, 1}, {3, 1}, {1, 0}});
+  for (int i = 0; i < 5; ++i) {
+    const Matrix6d a = random6();
+    sys.diagonal(i) += a * a.transpose() + 10 * Matrix6d::Identity();
+  }
+  const Matrix6d k01 = random6(), k31 = random6(), k42 = random6();
+  sys.scatter([&](int k) {
+    if (k == 0) sys.add_coupling(0, 1, k01);
+    if (k == 1) sys.add_coupling(3, 1, k31);
+  });
+  sys.add_coupling(2, 4, k42.transpose());  // not declared
+  const Eigen::MatrixXd full = Eigen::MatrixXd(sys.full());
+  EXPECT_TRUE((full.block<6, 6>(0, 6).isApprox(k01)));
+  EXPECT_TRUE((full.block<6, 6>(18, 6).isApprox(k31)));
+  EXPECT_TRUE((full.block<6, 6>(24, 12).isApprox(k42)));
+  EXPECT_TRUE((full.block<6, 6>(12, 24).isApprox(k42.transpose())));
+  const Eigen::VectorXd x = Eigen::VectorXd::NullaryExpr(30, [&] { return u(rng); });
+  Eigen::VectorXd y;
+  sys.multiply(x, y);
+  EXPECT_LE((y - full * x).norm(), 1e-12 * y.norm());
+  // The undeclared pair stays in the pattern of the next reset.
+  const std::uint64_t id = sys.pattern_id();
+  sys.reset(5, {{0, 1}, {3, 1}, {1, 0}});
+  EXPECT_EQ(sys.pattern_id(), id);
+  EXPECT_EQ(sys.csc().nonZeros(), 5 * 21 + 3 * 36);
+}
+
+// V1 (CASES.md) at phi = 20 with the solver forced to PCG: the same 1 % as
+// with CHOLMOD (see test_v1_sliding.cpp for the model).
+TEST(SolverPcg, V1SlidingWithinOnePercent) {
+  const double alpha = deg2rad(30.0), phi = 20.0;
+  ModelInput in;
+  in.geometry.blocks.push_back(test::make_block(test::rotated(test::rectangle(0, -1, 8, 1), alpha)));
+  in.geometry.blocks.push_back(test::make_block(test::rotated(test::rectangle(6, 0, 1, 1), alpha)));
+  in.materials = {test::rock(2000, 5e10)};
+  JointProperties j;
+  j.friction_deg = phi;
+  in.joint_sets = {j};
+  in.control.dt = 1e-3;
+  in.control.solver = "pcg";
+  for (const double x : {0.5, 4.0, 7.5}) in.fixed_points.push_back({"base", test::rotated(Vec2(x, -0.5), alpha), 0, {}});
+  in.measurements.push_back({"slider", test::rotated(Vec2(6.5, 0.5), alpha), 1});
+  Simulation sim(build_model(in));
+  sim.run_until(1.0);
+  const double s = sim.histories()[0].back().displacement.norm();
+  const double expected = 0.5 * 9.81 * (std::sin(alpha) - std::cos(alpha) * std::tan(deg2rad(phi)));
+  const SolverStats st = sim.solver().stats();
+  std::printf("V1 phi=20 PCG: s=%.6f expected=%.6f rel.err=%.2e, %ld PCG solves, %.1f iterations each\n", s,
+              expected, std::abs(s - expected) / expected, st.pcg_solves,
+              static_cast<double>(st.pcg_iterations) / st.pcg_solves);
+  EXPECT_LE(std::abs(s - expected) / expected, 0.01);
+  EXPECT_GT(st.pcg_solves, 900);
+  EXPECT_EQ(st.fallbacks, 0);
+}
+
+}  // namespace
+}  // namespace dda::df
