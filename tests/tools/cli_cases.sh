@@ -48,7 +48,7 @@ case_version() {
 }
 
 case_help_everywhere() {
-  for sub in "" dl dc run stats plot info; do
+  for sub in "" dl dc df run stats plot info history; do
     "$DDA" $sub --help > h.txt 2>&1 || fail "dda $sub --help exited non-zero"
     grep -q "Usage" h.txt || fail "dda $sub --help prints no usage"
   done
@@ -198,6 +198,132 @@ case_sliver_override() {
   [ "$n1" -lt "$n0" ] || fail "merging slivers did not reduce the block count ($n0 -> $n1)"
   json_get merged/stats.json "abs(d['total_area'] - 188.0) < 1e-9 * 188" | grep -q True || fail "area not conserved"
   expect_usage_error "$DDA" run scenario.yaml -o x --slivers squash
+}
+
+# DF: a 1 m block on a 30-degree incline (an 8 x 1 m slab held by three
+# fixed points), phi = 20 degrees, 1 s under gravity. Built in the slope
+# frame and rotated; a second measurement point rides in the slab.
+write_incline() {
+  /usr/bin/python3 - "$@" > incline.yaml <<'PY'
+import math
+a = math.radians(30)
+def r(x, y): return [round(math.cos(a)*x - math.sin(a)*y, 12), round(math.sin(a)*x + math.cos(a)*y, 12)]
+poly = [r(*p) for p in [(0, -1), (8, -1), (8, 0), (7, 0), (7, 1), (6, 1), (6, 0), (0, 0)]]
+print("name: incline\nseed: 3")
+print("domain: {polygon: %s}" % poly)
+print("lines:\n  - {set: interface, from: %s, to: %s}" % (r(6, 0), r(7, 0)))
+print("points:")
+for i, x in enumerate([0.5, 4.0, 7.5]): print("  - {name: base%d, kind: fixed, at: %s}" % (i + 1, r(x, -0.5)))
+print("  - {name: slider, kind: measurement, at: %s}" % r(6.5, 0.5))
+print("  - {name: slab, kind: measurement, at: %s}" % r(2.0, -0.5))
+print("""materials:
+  default: {density: 2000, young: 5.0e10, poisson: 0.25, plane: stress}
+joints:
+  default: {friction_deg: 45}
+  interface: {friction_deg: 20}
+control: {dt: 0.001, total_time: 1.0, output_interval: 0.25}
+output: {vtk: true, plots: false}""")
+PY
+}
+
+case_df_incline_analytic() {
+  write_incline
+  "$DDA" run incline.yaml -o out -q || fail "run"
+  for f in results.h5 vtk/df.pvd vtk/df_blocks_00000.vtu vtk/df_contacts_00004.vtu; do
+    [ -s "out/$f" ] || fail "out/$f missing"
+  done
+  [ "$(grep -c '<DataSet' out/vtk/df.pvd)" -eq 10 ] || fail "expected 5 frames x (blocks, contacts) in df.pvd"
+  "$DDA" history out/results.h5 --csv --point slider > h.csv || fail "history"
+  /usr/bin/python3 - <<'PY' || fail "displacement at t = 1 s is not within 2 % of g(sin30 - cos30 tan20)/2"
+import csv, math
+rows = list(csv.DictReader(open("h.csv")))
+last = rows[-1]
+assert abs(float(last["t"]) - 1.0) < 1e-9, last["t"]
+s = math.hypot(float(last["slider.ux"]), float(last["slider.uy"]))
+a = math.radians(30)
+expected = 9.81 * (math.sin(a) - math.cos(a) * math.tan(math.radians(20))) / 2
+print("s(1 s) = %.6f m, expected %.6f m, error %.3f %%" % (s, expected, 100 * abs(s - expected) / expected))
+assert abs(s - expected) <= 0.02 * expected
+PY
+  ls -a out | grep -q '\.tmp' && fail "temporary files left behind"
+  true
+}
+
+case_df_resume_reproduces() {
+  write_incline
+  "$DDA" run incline.yaml -o out -q --no-vtk || fail "run"
+  "$DDA" df incline.yaml --blocks out/blocks.h5 -o part.h5 --stop-at-step 300 -q || fail "df --stop-at-step"
+  json=$("$DDA" history part.h5 --csv | wc -l)
+  [ "$json" -eq 302 ] || fail "a run stopped at step 300 should hold 301 samples, got $((json - 1))"
+  "$DDA" info part.h5 | grep -q "300 steps .* incomplete" || fail "dda info on a stopped run: $("$DDA" info part.h5)"
+  "$DDA" df --resume part.h5 -q || fail "resume"
+  "$DDA" history out/results.h5 --csv > a.csv && "$DDA" history part.h5 --csv > b.csv || fail "history"
+  cmp -s a.csv b.csv || fail "the resumed run differs from the uninterrupted one"
+  "$DDA" history out/results.h5 --steps > a.csv && "$DDA" history part.h5 --steps > b.csv || fail "history --steps"
+  cmp -s a.csv b.csv || fail "the resumed run's step statistics differ"
+  "$DDA" df --resume part.h5 | grep -q "already complete" || fail "resuming a complete run"
+  "$DDA" info out/results.h5 | grep -q "dda-results (scenario), .* complete" || fail "dda info on a results file"
+}
+
+case_df_history_columns() {
+  write_incline
+  "$DDA" run incline.yaml -o out -q --no-vtk || fail "run"
+  "$DDA" history out/results.h5 --csv > all.csv || fail "history"
+  expected="t"
+  for p in slider slab; do for c in x y ux uy vx vy sxx syy sxy; do expected="$expected,$p.$c"; done; done
+  [ "$(head -1 all.csv)" = "$expected" ] || fail "header '$(head -1 all.csv)', expected '$expected'"
+  "$DDA" history out/results.h5 --csv --point slab > one.csv || fail "history --point"
+  [ "$(head -1 one.csv)" = "t,slab.x,slab.y,slab.ux,slab.uy,slab.vx,slab.vy,slab.sxx,slab.syy,slab.sxy" ] \
+    || fail "--point header '$(head -1 one.csv)'"
+  [ "$(wc -l < one.csv)" -eq "$(wc -l < all.csv)" ] || fail "--point changed the row count"
+  # The first sample is the start: no displacement yet.
+  /usr/bin/python3 -c "import csv; r=next(csv.DictReader(open('one.csv'))); assert float(r['t'])==0 and float(r['slab.ux'])==0" \
+    || fail "first row is not the initial state"
+  "$DDA" history --help | grep -q "NAME.sxy" || fail "--help does not document the columns"
+  expect_error 1 "out/results.h5: has no measurement point 'nope' \(its points are slider, slab\)" -- \
+    "$DDA" history out/results.h5 --csv --point nope
+  expect_error 1 "out/blocks.h5: is a dda-blocks file, expected a dda-results file" -- "$DDA" history out/blocks.h5 --csv
+}
+
+case_df_bad_inputs() {
+  write_incline
+  "$DDA" run incline.yaml -o out -q --no-vtk || fail "run"
+  B=out/blocks.h5
+  sed 's/density: 2000/density: -5/' incline.yaml > s.yaml
+  expect_error 1 "s.yaml:[0-9]+: materials.default.density must be > 0, got -5\.$" -- "$DDA" df s.yaml --blocks $B -o r.h5
+  sed 's/dt: 0.001/dt: 0/' incline.yaml > s.yaml
+  expect_error 1 "s.yaml:[0-9]+: control.dt must be > 0, got 0\.$" -- "$DDA" df s.yaml --blocks $B -o r.h5
+  sed 's/  interface: {friction_deg: 20}/  interface: {friction_deg: 20}\n  J7: {friction_deg: 10}/' incline.yaml > s.yaml
+  expect_error 1 "s.yaml:[0-9]+: joints.J7 names a joint set that out/blocks.h5 does not have \(its sets are interface\)" -- \
+    "$DDA" df s.yaml --blocks $B -o r.h5
+  sed 's/  interface: {friction_deg: 20}/  interface: {}/' incline.yaml > s.yaml
+  expect_error 1 "s.yaml:[0-9]+: joints.interface gives no joint properties" -- "$DDA" df s.yaml --blocks $B -o r.h5
+  printf 'bolts:\n  - {name: b1, from: [1, 0.2], to: [50, 50], stiffness: 1e8}\n' >> incline.yaml
+  expect_error 1 "incline.yaml:[0-9]+: bolts\[0\].to lies outside every block" -- "$DDA" df incline.yaml --blocks $B -o r.h5
+  printf 'domain: {box: [0, 0, 4, 4]}\nexcavations:\n  - {shape: rectangle, center: [2, 2], width: 4, height: 4}\ncontrol: {dt: 0.001, steps: 10}\n' > e.yaml
+  expect_error 1 "out2/blocks.h5: has no blocks" -- "$DDA" run e.yaml -o out2 --no-vtk --no-plots
+  printf 'domain: {box: [0, 0, 4, 4]}\nmaterials: {default: {density: 2000}}\n' > nc.yaml
+  expect_error 1 "nc.yaml:1: control is required for a forward run" -- "$DDA" run nc.yaml -o out3
+  [ ! -e out3/lines.h5 ] || fail "DL ran although the DF sections were wrong"
+  [ ! -e r.h5 ] || fail "a results file was written despite the errors"
+  expect_error 1 "dda df needs --blocks" -- "$DDA" df incline.yaml -o r.h5
+}
+
+case_df_ana_import() {
+  "$DDA" dl "$SRC/tests/data/df_pushblock.geo" -o lines.h5 -q || fail "dl of the .geo"
+  "$DDA" dc lines.h5 -o blocks.h5 -q || fail "dc"
+  "$DDA" df "$SRC/tests/data/df_pushblock.ana" --blocks blocks.h5 -o r.h5 -q || fail "df of the .ana"
+  "$DDA" history r.h5 --csv > h.csv || fail "history"
+  /usr/bin/python3 - <<'PY' || fail "pushed block: displacement at 0.5 s is not within 1 % of (F/m - g tan20) t^2 / 2"
+import csv, math
+last = list(csv.DictReader(open("h.csv")))[-1]
+s = float(last["measured_1.ux"])
+expected = 0.5 * (15000 / 2000 - 9.81 * math.tan(math.radians(20))) * 0.5 ** 2
+print("s(0.5 s) = %.6f m, expected %.6f m" % (s, expected))
+assert abs(float(last["t"]) - 0.5) < 1e-9 and abs(s - expected) <= 0.01 * expected
+PY
+  sed 's/<Maxtimestep maxtimestep="0.001"\/>/<Maxtimestep maxtimestep="0"\/>/' "$SRC/tests/data/df_pushblock.ana" > bad.ana
+  expect_error 1 "bad.ana:[0-9]+: <Maxtimestep> needs maxtimestep > 0, got 0\.$" -- "$DDA" df bad.ana --blocks blocks.h5 -o x.h5
 }
 
 "case_$CASE"

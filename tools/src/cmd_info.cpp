@@ -4,6 +4,7 @@
 #include "commands.hpp"
 #include "dda/common/error.hpp"
 #include "dda/common/model_io.hpp"
+#include "dda/df/results.hpp"
 
 namespace dda::cli {
 
@@ -19,7 +20,7 @@ void print_provenance(const Provenance& p) {
 void add_info_command(CLI::App& app, const GlobalOptions&) {
   auto input = std::make_shared<std::string>();
   auto show_scenario = std::make_shared<bool>(false);
-  CLI::App* cmd = app.add_subcommand("info", "Describe a lines or blocks file: what it holds and what made it");
+  CLI::App* cmd = app.add_subcommand("info", "Describe a lines, blocks or results file: what it holds and what made it");
   cmd->add_option("file", *input, "File written by dda")->required();
   cmd->add_flag("--scenario", *show_scenario, "Print the scenario text stored in the file");
   cmd->callback([input, show_scenario] {
@@ -36,6 +37,15 @@ void add_info_command(CLI::App& app, const GlobalOptions&) {
       std::cout << *input << ": dda-blocks, " << m.blocks.size() << " blocks, " << m.points.size() << " points\n";
       print_provenance(m.provenance);
       if (*show_scenario) std::cout << "\n" << m.provenance.scenario_text;
+    } else if (format == "dda-results") {
+      const df::Results r = df::read_results_h5(*input, /*with_state=*/false);
+      const double t_end = r.log.empty() ? 0.0 : r.log.back().time;
+      std::cout << *input << ": dda-results (" << r.source.input_kind << "), " << r.blocks.blocks.size()
+                << " blocks, " << r.log.size() << " steps to t = " << t_end << " s, "
+                << r.point_names.size() << " measurement points, " << r.bolt_names.size() << " bolts, "
+                << (r.complete ? "complete" : "incomplete (resume with `dda df --resume`)") << "\n";
+      print_provenance(r.source.provenance);
+      if (*show_scenario) std::cout << "\n" << r.source.provenance.scenario_text;
     } else {
       throw InputError(*input + ": is not a file written by dda (no `format` attribute).");
     }

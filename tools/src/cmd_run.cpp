@@ -2,8 +2,11 @@
 //
 // OUTDIR receives lines.h5, blocks.h5, dl_report.json, dc_report.json,
 // stats.json, vtk/{lines.vtu, blocks.vtu, model.pvd} and
-// figures/{lines, blocks, histograms}.png. The whole scenario is checked
-// before the first stage runs, so a typo in a late section fails at once.
+// figures/{lines, blocks, histograms}.png; a scenario with a `control`
+// section is then run forward (DF) into results.h5 and
+// vtk/{df.pvd, df_blocks_*.vtu, df_contacts_*.vtu}. The whole scenario is
+// checked before the first stage runs, so a typo in a late section fails at
+// once.
 #include <filesystem>
 
 #include "commands.hpp"
@@ -12,6 +15,7 @@
 #include "dda/common/scenario.hpp"
 #include "dda/common/vtk.hpp"
 #include "dda/dc/stats.hpp"
+#include "dda/df/scenario.hpp"
 #include "dda/dl/generate.hpp"
 #include "pipeline.hpp"
 #include "plot_runner.hpp"
@@ -22,23 +26,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct OutputOptions {
-  bool vtk = true;
-  bool plots = true;
-  int histogram_bins = 20;
-};
-
-OutputOptions parse_output_options(const YamlNode& root) {
-  OutputOptions o;
-  if (auto out = root.optional_child("output")) {
-    out->allow({"vtk", "plots", "histogram_bins"});
-    o.vtk = out->flag("vtk", true);
-    o.plots = out->flag("plots", true);
-    o.histogram_bins = static_cast<int>(out->integer("histogram_bins", 20, Range::closed(1, 10000)));
-  }
-  return o;
-}
-
 void make_dir(const fs::path& dir) {
   std::error_code ec;
   fs::create_directories(dir, ec);
@@ -47,6 +34,20 @@ void make_dir(const fs::path& dir) {
 
 }  // namespace
 
+OutputOptions parse_output_options(const YamlNode& root) {
+  OutputOptions o;
+  if (auto out = root.optional_child("output")) {
+    out->allow({"vtk", "plots", "histogram_bins", "checkpoint_seconds", "checkpoint_steps", "vtk_contacts"});
+    o.vtk = out->flag("vtk", true);
+    o.plots = out->flag("plots", true);
+    o.histogram_bins = static_cast<int>(out->integer("histogram_bins", 20, Range::closed(1, 10000)));
+    o.checkpoint_seconds = out->number("checkpoint_seconds", 60, Range::non_negative());
+    o.checkpoint_steps = static_cast<int>(out->integer("checkpoint_steps", 0, Range::closed(0, 1e9)));
+    o.vtk_contacts = out->flag("vtk_contacts", true);
+  }
+  return o;
+}
+
 void add_run_command(CLI::App& app, const GlobalOptions& global) {
   struct Options {
     std::string scenario, outdir;
@@ -54,7 +55,8 @@ void add_run_command(CLI::App& app, const GlobalOptions& global) {
     SliverOverrides slivers;
   };
   auto opt = std::make_shared<Options>();
-  CLI::App* cmd = app.add_subcommand("run", "Run the whole pipeline of a scenario (DL -> DC) into a folder");
+  CLI::App* cmd = app.add_subcommand(
+      "run", "Run the whole pipeline of a scenario (DL -> DC, then DF if it has a control section) into a folder");
   cmd->add_option("scenario", opt->scenario, "Scenario file (.yaml)")->required();
   cmd->add_option("-o,--output", opt->outdir, "Output folder (created if missing)")->required();
   cmd->add_flag("--no-plots", opt->no_plots, "Do not draw the figures");
@@ -66,6 +68,7 @@ void add_run_command(CLI::App& app, const GlobalOptions& global) {
     OutputOptions out = parse_output_options(root);
     dc::CutOptions cut_options = dc::parse_cut_options(root.optional_child("cutting"));
     apply(opt->slivers, cut_options);
+    df::check_df_scenario(root);
     if (opt->no_plots) out.plots = false;
     if (opt->no_vtk) out.vtk = false;
 
@@ -105,6 +108,13 @@ void add_run_command(CLI::App& app, const GlobalOptions& global) {
         run_plot_script({blocks_h5, "-o", (figs / "histograms.png").string(), "--kind", "histograms"});
         say(global.quiet, "figures written to " + figs.string() + "\n");
       }
+    }
+    if (df::scenario_has_df(root)) {
+      DfStage stage;
+      stage.results_path = (dir / "results.h5").string();
+      if (out.vtk) stage.vtk_dir = (dir / "vtk").string();
+      stage.quiet = global.quiet;
+      run_df_scenario(root, cut.model, blocks_h5, stage);
     }
   });
 }

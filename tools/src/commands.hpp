@@ -2,7 +2,11 @@
 // Subcommands of the `dda` program. Each registers itself on the app with
 // its options and a callback; main() only dispatches and reports errors.
 #include <CLI/CLI.hpp>
+#include <optional>
 #include <string>
+
+#include "dda/common/block_model.hpp"
+#include "dda/common/yaml_reader.hpp"
 
 namespace dda::cli {
 
@@ -16,5 +20,35 @@ void add_run_command(CLI::App& app, const GlobalOptions& global);
 void add_stats_command(CLI::App& app, const GlobalOptions& global);
 void add_plot_command(CLI::App& app, const GlobalOptions& global);
 void add_info_command(CLI::App& app, const GlobalOptions& global);
+void add_df_command(CLI::App& app, const GlobalOptions& global);
+void add_history_command(CLI::App& app, const GlobalOptions& global);
+// Analytical toolkit (tools/analysis; docs/analytical.md).
+void add_newmark_command(CLI::App& app, const GlobalOptions& global);
+void add_sliding3d_command(CLI::App& app, const GlobalOptions& global);
+void add_wedge_command(CLI::App& app, const GlobalOptions& global);
+void add_backfit_command(CLI::App& app, const GlobalOptions& global);
+void add_record_command(CLI::App& app, const GlobalOptions& global);
+
+// The scenario's `output` section (parsed in cmd_run.cpp; docs/scenario.md).
+struct OutputOptions {
+  bool vtk = true;
+  bool plots = true;
+  int histogram_bins = 20;
+  double checkpoint_seconds = 60;  // DF: rewrite results.h5 at least this often (wall clock), 0: at the end only
+  int checkpoint_steps = 0;        // DF: and every this many steps, 0: off
+  bool vtk_contacts = true;        // DF: write the contacts series next to the blocks series
+};
+OutputOptions parse_output_options(const YamlNode& root);
+
+// The DF stage (cmd_df.cpp), as `dda df` and `dda run` use it.
+struct DfStage {
+  std::string results_path;           // results.h5 to write
+  std::string vtk_dir;                // "" for no ParaView series
+  std::optional<int> stop_at_step;    // stop early with a checkpoint
+  bool quiet = false;
+};
+// A forward run of a YAML scenario on `blocks` (read from `blocks_path`).
+void run_df_scenario(const YamlNode& root, const BlockModel& blocks, const std::string& blocks_path,
+                     const DfStage& stage);
 
 }  // namespace dda::cli

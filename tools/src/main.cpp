@@ -13,7 +13,7 @@
 
 int main(int argc, char** argv) {
   CLI::App app{"dda: discontinuous deformation analysis of jointed rock.\n"
-               "Pipeline: dl (lines) -> dc (blocks) -> df (forward run, later); "
+               "Pipeline: dl (lines) -> dc (blocks) -> df (forward run) -> history; "
                "`dda run` chains the stages a scenario asks for."};
   app.set_version_flag("--version", std::string("dda ") + dda::version_string());
   app.require_subcommand(1);
@@ -23,10 +23,17 @@ int main(int argc, char** argv) {
 
   dda::cli::add_dl_command(app, global);
   dda::cli::add_dc_command(app, global);
+  dda::cli::add_df_command(app, global);
   dda::cli::add_run_command(app, global);
   dda::cli::add_stats_command(app, global);
   dda::cli::add_plot_command(app, global);
   dda::cli::add_info_command(app, global);
+  dda::cli::add_history_command(app, global);
+  dda::cli::add_newmark_command(app, global);
+  dda::cli::add_sliding3d_command(app, global);
+  dda::cli::add_wedge_command(app, global);
+  dda::cli::add_backfit_command(app, global);
+  dda::cli::add_record_command(app, global);
 
   try {
     app.parse(argc, argv);

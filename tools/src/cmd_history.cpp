@@ -1,0 +1,148 @@
+// dda history results.h5 [--csv] [--point NAME ...] [--steps] [-o FILE]
+//
+// The measurement-point time series of a results file, as a summary or as
+// CSV (one row per sample, sample 0 being the start of the run).
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "commands.hpp"
+#include "dda/common/atomic_file.hpp"
+#include "dda/common/error.hpp"
+#include "dda/df/results.hpp"
+
+namespace dda::cli {
+
+namespace {
+
+constexpr const char* kColumnsHelp =
+    "CSV columns: t (s), then for each point NAME: NAME.x NAME.y (current position, m), NAME.ux NAME.uy "
+    "(displacement from the start of the run, m), NAME.vx NAME.vy (velocity, m/s), NAME.sxx NAME.syy NAME.sxy "
+    "(stress of the block the point lies in, Pa, tension positive). With --steps: step, t, dt, iterations, "
+    "dt_cuts, converged, open, sliding, locked, max_displacement, kinetic_energy, elastic_energy.";
+
+void put(std::string& out, double v) {
+  char buf[32];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  out.append(buf, r.ptr);
+}
+
+std::string points_csv(const df::Results& r, const std::vector<std::size_t>& which) {
+  std::string out = "t";
+  for (std::size_t p : which)
+    for (const char* c : {"x", "y", "ux", "uy", "vx", "vy", "sxx", "syy", "sxy"}) out += "," + r.point_names[p] + "." + c;
+  out += "\n";
+  if (r.histories.empty()) {  // no measurement points: just the times
+    put(out, r.log.empty() ? 0.0 : r.log.front().time - r.log.front().dt);
+    out += "\n";
+    for (const df::StepRecord& st : r.log) {
+      put(out, st.time);
+      out += "\n";
+    }
+    return out;
+  }
+  const std::size_t ns = r.histories[0].size();
+  for (std::size_t s = 0; s < ns; ++s) {
+    put(out, r.histories[0][s].time);
+    for (std::size_t p : which) {
+      const df::MeasurementSample& m = r.histories[p][s];
+      for (double v : {m.position.x(), m.position.y(), m.displacement.x(), m.displacement.y(), m.velocity.x(),
+                       m.velocity.y(), m.stress[0], m.stress[1], m.stress[2]}) {
+        out += ',';
+        put(out, v);
+      }
+    }
+    out += "\n";
+  }
+  return out;
+}
+
+std::string steps_csv(const df::Results& r) {
+  std::string out =
+      "step,t,dt,iterations,dt_cuts,converged,open,sliding,locked,max_displacement,kinetic_energy,elastic_energy\n";
+  for (const df::StepRecord& s : r.log) {
+    out += std::to_string(s.step) + ",";
+    put(out, s.time);
+    out += ",";
+    put(out, s.dt);
+    out += "," + std::to_string(s.open_close_iterations) + "," + std::to_string(s.dt_cuts) + "," +
+           std::to_string(s.converged ? 1 : 0) + "," + std::to_string(s.open) + "," + std::to_string(s.sliding) +
+           "," + std::to_string(s.locked) + ",";
+    put(out, s.max_displacement);
+    out += ",";
+    put(out, s.kinetic_energy);
+    out += ",";
+    put(out, s.elastic_energy);
+    out += "\n";
+  }
+  return out;
+}
+
+std::string summary(const df::Results& r, const std::string& path, const std::vector<std::size_t>& which) {
+  std::ostringstream s;
+  const double t = r.log.empty() ? 0 : r.log.back().time;
+  s << path << ": " << r.log.size() << " steps to t = " << t << " s" << (r.complete ? "" : " (not complete)") << ", "
+    << r.point_names.size() << " measurement points\n";
+  if (which.empty()) return s.str();
+  s << "point            block        ux (m)        uy (m)     |u|max (m)\n";
+  for (std::size_t p : which) {
+    const auto& h = r.histories[p];
+    double umax = 0;
+    for (const df::MeasurementSample& m : h) umax = std::max(umax, m.displacement.norm());
+    char line[160];
+    std::snprintf(line, sizeof line, "%-14s %7d %13.6g %13.6g %13.6g\n", r.point_names[p].c_str(), r.point_blocks[p],
+                  h.back().displacement.x(), h.back().displacement.y(), umax);
+    s << line;
+  }
+  return s.str();
+}
+
+}  // namespace
+
+void add_history_command(CLI::App& app, const GlobalOptions&) {
+  struct Options {
+    std::string input, output;
+    std::vector<std::string> points;
+    bool csv = false, steps = false;
+  };
+  auto opt = std::make_shared<Options>();
+  CLI::App* cmd = app.add_subcommand("history", "Time series of the measurement points of a results file");
+  cmd->footer(kColumnsHelp);
+  cmd->add_option("results", opt->input, "Results file written by `dda df` or `dda run`")->required();
+  cmd->add_flag("--csv", opt->csv, "Print the series as CSV (one row per sample; see the columns below)");
+  cmd->add_option("--point", opt->points, "Only these measurement points (repeat or list several)");
+  cmd->add_flag("--steps", opt->steps, "Print the per-step statistics as CSV instead");
+  cmd->add_option("-o,--output", opt->output, "Write to this file instead of the standard output");
+  cmd->callback([opt] {
+    const df::Results r = df::read_results_h5(opt->input, false);
+    std::vector<std::size_t> which;
+    for (const std::string& name : opt->points) {
+      std::size_t k = 0;
+      while (k < r.point_names.size() && r.point_names[k] != name) ++k;
+      if (k == r.point_names.size()) {
+        std::string known;
+        for (const std::string& n : r.point_names) known += (known.empty() ? "" : ", ") + n;
+        throw InputError(opt->input + ": has no measurement point '" + name + "' (its points are " +
+                         (known.empty() ? "none" : known) + ").");
+      }
+      which.push_back(k);
+    }
+    if (opt->points.empty())
+      for (std::size_t k = 0; k < r.point_names.size(); ++k) which.push_back(k);
+    std::string text;
+    if (opt->steps)
+      text = steps_csv(r);
+    else if (opt->csv)
+      text = points_csv(r, which);
+    else
+      text = summary(r, opt->input, which);
+    if (opt->output.empty())
+      std::cout << text << std::flush;
+    else
+      write_text_atomically(opt->output, text);
+  });
+}
+
+}  // namespace dda::cli
