@@ -105,6 +105,16 @@ void write_checkpoint(h5::Writer& w, const SimulationState& s) {
         "rate-and-state variable");
   w.f64(c, "friction_slip", reals(cs, [](const Contact& x) { return x.friction.slip; }), {cs.size()}, "m",
         "cumulative slip");
+  {  // further law-specific memory (FrictionState::extra), ragged
+    std::vector<double> extra;
+    for (const Contact& x : cs) extra.insert(extra.end(), x.friction.extra.begin(), x.friction.extra.end());
+    w.i32(c, "friction_extra_count",
+          ints(cs, [](const Contact& x) { return static_cast<std::int32_t>(x.friction.extra.size()); }), "",
+          "number of law-specific friction variables of each contact (in friction_extra)");
+    w.f64(c, "friction_extra", extra, {extra.size()}, "",
+          "law-specific friction variables of all contacts, in contact order (e.g. degradation: reversals, "
+          "last slip sign)");
+  }
 
   h5::Id pg(H5Gcreate2(g.get(), "points", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
   w.f64(pg.get(), "fixed_anchor", flat(s.fixed_anchor), {s.fixed_anchor.size(), 2}, "m",
@@ -217,6 +227,20 @@ void read_checkpoint(const h5::Reader& r, const std::vector<std::size_t>& vertex
     x.length = ln[k];
     x.friction.theta = th[k];
     x.friction.slip = sl[k];
+  }
+  // Law-specific friction memory; files written before it existed have none.
+  if (r.exists(c + "friction_extra_count")) {
+    const auto count = ivec("friction_extra_count");
+    const std::vector<double> extra = r.f64(c + "friction_extra").data;
+    std::size_t pos = 0;
+    for (std::size_t k = 0; k < nc; ++k) {
+      if (count[k] < 0 || pos + static_cast<std::size_t>(count[k]) > extra.size())
+        r.fail("dataset " + c + "friction_extra holds fewer values than friction_extra_count asks for");
+      s.contacts[k].friction.extra.assign(extra.begin() + static_cast<long>(pos),
+                                          extra.begin() + static_cast<long>(pos + count[k]));
+      pos += static_cast<std::size_t>(count[k]);
+    }
+    if (pos != extra.size()) r.fail("dataset " + c + "friction_extra holds more values than friction_extra_count");
   }
 
   const std::string p = "/checkpoint/points/";

@@ -1,6 +1,5 @@
-// Coulomb-Mohr friction and the registry of friction laws.
+// Coulomb-Mohr friction, and the plain form of FrictionState.
 #include <cmath>
-#include <limits>
 
 #include "dda/common/error.hpp"
 #include "dda/df/friction.hpp"
@@ -30,27 +29,6 @@ FrictionState FrictionState::from_vector(const std::vector<double>& v) {
   s.slip = v[1];
   s.extra.assign(v.begin() + 2, v.end());
   return s;
-}
-
-namespace {
-class StuckFriction final : public FrictionLaw {
- public:
-  std::string name() const override { return "stuck"; }
-  double strength(const FrictionInput& /*in*/, const FrictionState& /*state*/) const override {
-    return std::numeric_limits<double>::max();
-  }
-};
-}  // namespace
-
-const FrictionLaw* stuck_friction() {
-  static const StuckFriction law;
-  return &law;
-}
-
-std::unique_ptr<FrictionLaw> make_friction_law(const JointProperties& joint) {
-  // One line per law.
-  if (joint.friction_law == "coulomb") return std::make_unique<CoulombFriction>(joint.friction_deg, joint.cohesion);
-  throw InputError("Unknown friction law '" + joint.friction_law + "' (known: coulomb).");
 }
 
 }  // namespace dda::df

@@ -12,6 +12,7 @@
 #include "dda/common/error.hpp"
 #include "dda/df/friction.hpp"
 #include "dda/df/scenario.hpp"
+#include "scenario_earthquake.hpp"
 
 namespace dda::df {
 namespace {
@@ -76,6 +77,30 @@ Zone read_zone(const YamlNode& z) {
   return out;
 }
 
+// friction_law as a mapping: the law's name and its own numbers and words
+// (FrictionLawSpec); ranges are checked here, the rest by the law itself.
+void read_friction_law(const YamlNode& f, JointProperties& j) {
+  const std::string name = f.text("name");
+  const FrictionLawEntry* law = find_friction_law(name);
+  if (!law) {
+    std::string known;
+    for (const FrictionLawEntry& e : friction_laws()) known += (known.empty() ? "" : ", ") + e.name;
+    f.fail_key("name", "must be a known friction law (" + known + "), got '" + name + "'");
+  }
+  const FrictionLawSpec spec = law->spec();
+  std::vector<std::string> keys{"name"};
+  for (const FrictionParameter& p : spec.numbers) keys.push_back(p.key);
+  for (const FrictionOption& w : spec.words) keys.push_back(w.key);
+  f.allow(keys);
+  j.friction_law = name;
+  j.friction_parameters.clear();
+  j.friction_options.clear();
+  for (const FrictionParameter& p : spec.numbers)
+    if (f.has(p.key)) j.friction_parameters[p.key] = f.number(p.key, p.range);
+  for (const FrictionOption& w : spec.words)
+    if (f.has(w.key)) j.friction_options[w.key] = f.text(w.key);
+}
+
 JointProperties read_joint(const YamlNode& n, const JointProperties& base) {
   JointProperties j = base;
   j.friction_deg = n.number("friction_deg", base.friction_deg, Range::half_open(0, 90));
@@ -83,9 +108,24 @@ JointProperties read_joint(const YamlNode& n, const JointProperties& base) {
   j.tensile_strength = n.number("tensile_strength", base.tensile_strength, Range::non_negative());
   if (n.has("normal_penalty")) j.normal_penalty = n.number("normal_penalty", Range::positive());
   if (n.has("shear_penalty")) j.shear_penalty = n.number("shear_penalty", Range::positive());
-  j.friction_law = n.text("friction_law", base.friction_law);
+  // friction_law: a name (keeping the parameters of the base, if any, when
+  // it names the base's law), or {name: ..., <parameter>: value, ...}.
+  std::optional<YamlNode> law_node;
+  if (n.has("friction_law")) {
+    const YamlNode f = n.child("friction_law");
+    if (f.is_map()) {
+      read_friction_law(f, j);
+      law_node = f;
+    } else {
+      j.friction_law = f.as_text();
+      if (j.friction_law != base.friction_law) j.friction_parameters.clear(), j.friction_options.clear();
+    }
+  }
   try {
     make_friction_law(j);
+  } catch (const FrictionParameterError& e) {
+    if (law_node) law_node->fail_key(e.key(), e.phrase());
+    n.fail_key("friction_law", std::string("is not usable: ") + e.what());
   } catch (const InputError& e) {
     n.fail_key("friction_law", std::string("is not usable: ") + e.what());
   }
@@ -156,6 +196,7 @@ struct Parsed {
     std::optional<TimeHistory> history;
   };
   std::vector<Load> loads;
+  std::optional<EarthquakeEntry> earthquake;  // loading.earthquake (scenario_earthquake.cpp)
   struct Fix {
     YamlNode node;
     std::string point;
@@ -216,7 +257,8 @@ Parsed parse(const YamlNode& root) {
 
   // loading
   if (auto l = root.optional_child("loading")) {
-    l->allow({"gravity", "point_loads"});
+    l->allow({"gravity", "point_loads", "earthquake"});
+    if (l->has("earthquake")) p.earthquake = read_earthquake(l->child("earthquake"));
     if (l->has("gravity")) {
       const YamlNode g = l->child("gravity");
       if (g.is_sequence())
@@ -474,6 +516,7 @@ DfScenario read_df_scenario(const YamlNode& root, const BlockModel& blocks, cons
   add_boundary_fixes(blocks, p.fixed_sides, in);
   if (!p.fixed_sides.empty() && in.fixed_points.empty() && p.fixed_boundary_node)
     p.fixed_boundary_node->fail("fixes nothing: no block has a domain-boundary edge on those sides");
+  if (p.earthquake) apply_earthquake(*p.earthquake, p.fixed_sides, in);  // needs every fixed point
 
   // Bolts: both ends must lie in blocks, and in different ones.
   for (const auto& [node, bolt] : p.bolts) {

@@ -4,11 +4,14 @@
 // The contact code asks a law for the shear strength of a closed contact; a
 // law with memory (rate and state, slip weakening) keeps it in the contact's
 // FrictionState and updates it once per accepted step. A new law is one new
-// file with a FrictionLaw subclass and one line in make_friction_law().
+// file with a FrictionLaw subclass and one line in friction_laws()
+// (df/src/friction_registry.cpp); the laws built in are in friction_laws.hpp.
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "dda/common/error.hpp"
+#include "dda/common/yaml_reader.hpp"
 #include "dda/df/model.hpp"
 
 namespace dda::df {
@@ -24,6 +27,7 @@ struct FrictionInput {
   double contact_length = 0;   // m, length of joint the contact stands for
   double dt = 0;               // s, current step
   bool bonded = false;         // cohesion counts only while the contact is intact
+  int slip_sign = 0;           // advance(): +1 / -1 while sliding (direction along the edge), 0 otherwise
 };
 
 // Per-contact memory of a law (unused by Coulomb), carried from step to step
@@ -62,7 +66,71 @@ class CoulombFriction final : public FrictionLaw {
   double cohesion_;
 };
 
-// The law named in the joint properties; InputError for an unknown name.
+// ---- Parameters of a law (JointProperties::friction_parameters / _options).
+
+// One number a law reads; `fallback` NaN means required.
+struct FrictionParameter {
+  std::string key;
+  double fallback;
+  Range range;
+  std::string unit;  // for messages and docs: "1", "m", "m/s", "deg"
+};
+
+// One word a law reads; the first choice is the default.
+struct FrictionOption {
+  std::string key;
+  std::vector<std::string> choices;
+};
+
+struct FrictionLawSpec {
+  std::vector<FrictionParameter> numbers;
+  std::vector<FrictionOption> words;
+};
+
+// A bad friction parameter: key() names it, phrase() says what is wrong as
+// a verb phrase ("must be > 0, got -1"), so the scenario reader can point at
+// the key's line; what() is a whole sentence for input built in code.
+class FrictionParameterError : public InputError {
+ public:
+  FrictionParameterError(const std::string& law, const std::string& key, const std::string& phrase)
+      : InputError("Friction law " + law + ": parameter " + key + " " + phrase + "."), key_(key), phrase_(phrase) {}
+  const std::string& key() const { return key_; }
+  const std::string& phrase() const { return phrase_; }
+
+ private:
+  std::string key_, phrase_;
+};
+
+// Reads a law's parameters from a joint, with the defaults and ranges of its
+// spec; anything unknown, missing or out of range is a FrictionParameterError.
+class FrictionParameters {
+ public:
+  FrictionParameters(const std::string& law, const FrictionLawSpec& spec, const JointProperties& joint);
+  bool given(const std::string& key) const;
+  double number(const std::string& key) const;                    // given, else the spec's fallback
+  double number(const std::string& key, double fallback) const;   // given, else `fallback` (range-checked)
+  std::string word(const std::string& key) const;
+  [[noreturn]] void fail(const std::string& key, const std::string& phrase) const;
+
+ private:
+  const FrictionParameter& spec_of(const std::string& key) const;
+  std::string law_;
+  FrictionLawSpec spec_;
+  const JointProperties& joint_;
+};
+
+// A law built in: its name, what it reads, how to make it. The table is in
+// df/src/friction_registry.cpp (one line per law).
+struct FrictionLawEntry {
+  std::string name;
+  FrictionLawSpec (*spec)();
+  std::unique_ptr<FrictionLaw> (*make)(const JointProperties&);
+};
+const std::vector<FrictionLawEntry>& friction_laws();
+const FrictionLawEntry* find_friction_law(const std::string& name);  // nullptr if unknown
+
+// The law named in the joint properties; InputError for an unknown name,
+// FrictionParameterError for a bad parameter.
 std::unique_ptr<FrictionLaw> make_friction_law(const JointProperties& joint);
 
 // A law that never lets go (strength without limit): contacts stick while
