@@ -88,6 +88,10 @@ void check_history(const std::optional<TimeHistory>& h, const std::string& what)
   require(!h->t.empty(), what + " has an empty time history.");
   require(h->t.size() == h->value.size(), what + " has a time history with " + std::to_string(h->t.size()) +
                                               " times but " + std::to_string(h->value.size()) + " values.");
+  require(h->rate.empty() || h->rate.size() == h->t.size(),
+          what + " has a time history with " + std::to_string(h->rate.size()) + " rates for " +
+              std::to_string(h->t.size()) + " times.");
+  for (const Vec2& r : h->rate) require(finite(r), what + " has a time history rate that is not a finite number.");
   for (std::size_t k = 0; k < h->t.size(); ++k) {
     require(std::isfinite(h->t[k]) && finite(h->value[k]),
             what + " has a time history entry that is not a finite number (row " + std::to_string(k + 1) + ").");
@@ -181,6 +185,16 @@ Model build_model(ModelInput in) {
     check_history(l.history, "Load point '" + l.name + "'");
     m.loads.push_back(l);
   }
+  if (in.body_acceleration) {
+    BodyAcceleration b = *in.body_acceleration;
+    check_history(b.history, "The body acceleration (earthquake, loading mode)");
+    std::sort(b.blocks.begin(), b.blocks.end());
+    b.blocks.erase(std::unique(b.blocks.begin(), b.blocks.end()), b.blocks.end());
+    for (const int i : b.blocks)
+      require(i >= 0 && i < static_cast<int>(nb), "The body acceleration acts on block " + std::to_string(i) +
+                                                      " but the model has " + std::to_string(nb) + " blocks.");
+    m.body_acceleration = std::move(b);
+  }
   for (Bolt b : in.bolts) {
     const std::string w = "Bolt '" + b.name + "'";
     b.anchor_block = resolve_block(m.blocks, b.anchor_block, b.anchor, w + " (anchor)");
@@ -218,6 +232,7 @@ Model build_model(ModelInput in) {
   }
   m.control = in.control;
   m.search_distance = 2.5 * m.control.max_displacement_ratio * *m.control.w0;
+  m.contact_tolerance = 1e-12 * *m.control.w0;
   return m;
 }
 

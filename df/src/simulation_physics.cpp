@@ -12,6 +12,13 @@ double strain_energy(const BlockState& b, const Matrix3d& emat) {
   return 0.5 * b.geometry.area * b.stress.dot(emat.ldlt().solve(b.stress));
 }
 
+// The body acceleration of a step [t, t + dt]: its mean over the step (so a
+// piecewise-linear record gives the exact impulse); while settling into
+// equilibrium (time frozen at t, pseudo steps) its value at t.
+Vec2 step_body_acceleration(const BodyAcceleration& b, double t, double dt, bool settling) {
+  return settling ? b.history.at(t) : b.history.average(t, t + dt);
+}
+
 }  // namespace
 
 void Simulation::init_physics() {
@@ -48,7 +55,13 @@ void Simulation::init_physics() {
   energy_log_.assign(1, e);
 }
 
-void Simulation::assemble_physics(double /*dt*/) {
+void Simulation::assemble_physics(double dt) {
+  if (const auto& ba = model_.body_acceleration) {
+    // Like gravity: rho b S on the translations of each shaken block.
+    const Vec2 b = step_body_acceleration(*ba, time_, dt, settling_);
+    for (const int i : ba->blocks)
+      system_.rhs(i).head<2>() += blocks_[i].geometry.area * model_.materials[model_.block_material[i]].density * b;
+  }
   for (std::size_t k = 0; k < bolts_.size(); ++k) {
     const Bolt& b = model_.bolts[k];
     add_bolt_terms(b, bolts_[k], blocks_[b.anchor_block].geometry.centroid, blocks_[b.head_block].geometry.centroid,
@@ -74,6 +87,12 @@ void Simulation::before_accept(double dt, const Eigen::VectorXd& d, const std::v
     const PointLoad& l = model_.loads[k];
     const Vec2 u = t_matrix(blocks_[l.block].geometry.centroid, load_pos_[k]) * di(l.block);
     e.load_work += load_force(l, time_, time_ + dt).dot(u);
+  }
+  if (const auto& ba = model_.body_acceleration) {  // counted with the loads
+    const Vec2 b = step_body_acceleration(*ba, time_, dt, settling_);
+    for (const int i : ba->blocks)
+      e.load_work += blocks_[i].geometry.area * model_.materials[model_.block_material[i]].density *
+                     b.dot(di(i).head<2>());
   }
   for (std::size_t k = 0; k < model_.fixed_points.size(); ++k) {
     // A moving fixed point does work on its spring: the change of the

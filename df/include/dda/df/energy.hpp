@@ -6,7 +6,8 @@
 // springs of closed contacts, N^2 / 2 pn, plus the shear springs of locked
 // ones, S^2 / 2 ps), fixed (fixed-point springs) and bolts (T^2 / 2k).
 // Input work: gravity (m g . centroid displacement) and loads (point loads,
-// as assembled, plus the work of moving fixed points on their springs).
+// as assembled, plus the work of moving fixed points on their springs and of
+// a body acceleration, m b . centroid displacement, e.g. an earthquake).
 // Losses that are accounted for: friction (sliding force times slip at every
 // sliding contact), damping (the kinetic energy a dynamic parameter k < 1
 // removes, (1 - k^2) of it) and breakage (energy released by broken bolts).

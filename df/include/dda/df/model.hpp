@@ -34,19 +34,33 @@ struct JointProperties {
   std::optional<double> normal_penalty;  // N/m per unit thickness; default Control::penalty_factor * max E
   std::optional<double> shear_penalty;   // N/m; default Control::shear_ratio * normal penalty
   std::string friction_law = "coulomb";  // name of the FrictionLaw (see friction.hpp)
+  // The law's own numbers and words by key (e.g. "a" -> 0.01, "evolution" ->
+  // "aging"); each law checks them (friction_laws.hpp, docs/scenario.md).
+  std::map<std::string, double> friction_parameters;
+  std::map<std::string, std::string> friction_options;
 };
 
 // A piecewise-linear table of a 2D quantity against time: (t_k, x_k, y_k),
 // t strictly increasing. Before the first time it holds the first value,
 // after the last the last one (a load stays on, a moving point stops).
 // Implemented in df/src/time_history.cpp; build_model() checks it.
+//
+// With `rate` (the derivative at each row, e.g. the ground velocity of an
+// earthquake's displacement table) the table is a C1 cubic Hermite curve
+// between the rows instead, and before the first row / after the last it
+// continues along the first / last rate. A DDA block pulled along a
+// moving point follows the point's velocity only if the point moves
+// smoothly: a piecewise-linear path changes velocity abruptly at the rows,
+// and where the rows do not coincide with step ends the block's velocity
+// (v1 = 2 d / dt - v0) starts an undamped step-to-step ripple.
 struct TimeHistory {
   std::vector<double> t;             // s, strictly increasing, at least one entry
   std::vector<Vec2> value;           // one per time (N for loads, m for displacements)
+  std::vector<Vec2> rate{};          // empty, or one per time: d value / dt
 
-  Vec2 at(double time) const;        // linear interpolation
-  // Mean value over [t0, t1] (exact integral of the piecewise-linear table
-  // divided by t1 - t0); at(t0) when t1 <= t0.
+  Vec2 at(double time) const;        // linear (or Hermite) interpolation
+  // Mean value over [t0, t1] (exact integral of the table divided by
+  // t1 - t0); at(t0) when t1 <= t0.
   Vec2 average(double t0, double t1) const;
 };
 
@@ -70,6 +84,15 @@ struct PointLoad {
   Vec2 force{0, 0};                  // N per unit thickness
   int block = -1;
   std::optional<TimeHistory> history = std::nullopt;  // force F(t), N; replaces `force`
+};
+
+// A body acceleration b(t) (m/s^2) added to gravity on some blocks only: an
+// earthquake in loading mode puts b = -a_g(t) here for every block outside
+// the foundation (ground_motion.hpp). Each step applies the mean of the
+// table over the step (a piecewise-linear record is integrated exactly).
+struct BodyAcceleration {
+  TimeHistory history;               // b(t), m/s^2; give zero rows to end it (the last value is held)
+  std::vector<int> blocks;           // the blocks it acts on
 };
 
 // Where a fixed point's spring pulls it at time t: its initial position
@@ -134,6 +157,7 @@ struct ModelInput {
   Vec2 gravity{0, -9.81};                   // m/s^2
   std::vector<FixedPoint> fixed_points;
   std::vector<PointLoad> loads;
+  std::optional<BodyAcceleration> body_acceleration;  // e.g. an earthquake in loading mode
   std::vector<Bolt> bolts;
   std::vector<MeasurementPoint> measurements;
   std::vector<Vector6d> initial_velocity;   // empty, or one per block [u, v, r, ex, ey, gxy] rates
@@ -157,12 +181,18 @@ struct Model {
   Vec2 gravity{0, -9.81};
   std::vector<FixedPoint> fixed_points;     // block and penalty resolved
   std::vector<PointLoad> loads;             // block resolved
+  std::optional<BodyAcceleration> body_acceleration;  // blocks checked, sorted, unique
   std::vector<Bolt> bolts;                  // blocks resolved
   std::vector<MeasurementPoint> measurements;
   std::vector<Vector6d> initial_velocity;   // one per block
   std::vector<Vector3d> initial_stress;     // one per block
   Control control;                          // w0 resolved
   double search_distance = 0;               // m, 2.5 * g2 * w0
+  // m, the open-close dead band (ContactLaw::tolerance): 1e-12 * w0, far
+  // above the rounding of dn (1e-20 m on a 40 m model) and far below any
+  // displacement that matters (a pull of pn * 2e-11 m is 15 N at pn = 50 E,
+  // E = 15 GPa: 0.07 % of the weight of a 1 m^2 block).
+  double contact_tolerance = 0;
 
   int block_count() const { return static_cast<int>(blocks.size()); }
   // Joint index for an edge's set id (the default joint for negative or unknown ids).
