@@ -99,7 +99,8 @@ void add_contact_terms(const Contact& c, const ContactLaw& law, double dt, Block
   }
 }
 
-ContactState update_contact(Contact& c, const ContactLaw& law, double dt, const Vector6d& di, const Vector6d& dj) {
+ContactState update_contact(Contact& c, const ContactLaw& law, double dt, const Vector6d& di, const Vector6d& dj,
+                            bool hold) {
   ContactGeometry& g = c.geo;
   const double dn = g.dn0 + g.en.dot(di) + g.gn.dot(dj);
   const ContactState old = c.state;
@@ -135,8 +136,9 @@ ContactState update_contact(Contact& c, const ContactLaw& law, double dt, const 
     return ContactState::Locked;
   }
 
+  const double eps = law.tolerance;
   if (old == ContactState::Open) {
-    if (dn < 0) {
+    if (dn < -eps) {
       c.normal_force = -law.pn * dn;
       return lock();
     }
@@ -145,8 +147,9 @@ ContactState update_contact(Contact& c, const ContactLaw& law, double dt, const 
   }
 
   const double n = -law.pn * dn;
-  const double tension_cap = c.bonded ? law.tensile_strength * c.length : 0.0;
-  if (n < -tension_cap) {
+  // A closed contact within the band keeps its spring (a pull of at most pn eps).
+  const double tension_cap = (c.bonded ? law.tensile_strength * c.length : 0.0) + law.pn * eps;
+  if (n < -tension_cap && !hold) {
     c.broke = c.bonded;
     c.bonded = false;
     c.normal_force = 0;
@@ -159,7 +162,7 @@ ContactState update_contact(Contact& c, const ContactLaw& law, double dt, const 
   if (old == ContactState::Locked) {
     const double ds = g.ds0 + g.es.dot(di) + g.gs.dot(dj);
     const double fs = -law.ps * ds;
-    if (std::abs(fs) > law.friction->strength(friction_input(c, dt), c.friction)) {
+    if (std::abs(fs) > law.friction->strength(friction_input(c, dt), c.friction) + law.ps * eps) {
       c.broke = c.bonded;
       c.bonded = false;
       c.slip_sign = ds > 0 ? 1 : -1;
@@ -171,7 +174,7 @@ ContactState update_contact(Contact& c, const ContactLaw& law, double dt, const 
   }
 
   // Sliding: it locks when P moves back against the assumed slip direction.
-  if (slip * c.slip_sign < 0) return lock();
+  if (slip * c.slip_sign < -eps && !hold) return lock();
   const double friction_now = law.friction->strength(friction_input(c, dt), c.friction);
   const double floor = 1e-10 * law.pn * g.length;  // the force of a 1e-10 l penetration
   c.friction_settled = std::abs(friction_now - friction_used) <= 1e-3 * std::abs(friction_now) + floor;

@@ -76,6 +76,15 @@ struct ContactLaw {
   double pn = 0, ps = 0;
   double tensile_strength = 0;   // Pa
   const FrictionLaw* friction = nullptr;
+  // Distance below which the open-close decision keeps the current state
+  // (m): a closed contact opens only when it gaps by more than this, an open
+  // one closes only when it penetrates by more, a sliding one locks only when
+  // it moves back by more, and a locked one slides only when its spring is
+  // stretched this far past the strength. Faces that DC makes in exact touch
+  // start at dn = 0, and the solve leaves them at +-1e-20 m of rounding:
+  // without the band thousands of such contacts flip every iteration and the
+  // step never settles. See Model::contact_tolerance.
+  double tolerance = 0;
 };
 
 // Springs and friction forces of the contact in its current state.
@@ -87,7 +96,16 @@ void add_contact_terms(const Contact& c, const ContactLaw& law, double dt, Block
 // friction force assembled (from the previous normal force) agrees with the
 // one the new normal force gives, within 0.1 %: the open-close iteration goes
 // on until it does, so friction is in effect implicit in the normal force.
+//
+// `hold` guards the iteration against chatter: a contact that has already
+// changed state twice in this step's iteration is held, i.e. it may still
+// close or start sliding but no longer open or stick again. The cycles it
+// breaks are between states of (nearly) zero force: the closed iterate pulls
+// with a force that the open one shows is not needed, and the other way
+// round; holding the contact closed keeps that small pull (bounded by the
+// pull seen in the cycle) and lets the step settle at its size instead of
+// being cut to the smallest dt.
 ContactState update_contact(Contact& c, const ContactLaw& law, double dt, const Vector6d& di,
-                            const Vector6d& dj);
+                            const Vector6d& dj, bool hold = false);
 
 }  // namespace dda::df
