@@ -309,6 +309,30 @@ case_df_bad_inputs() {
   expect_error 1 "dda df needs --blocks" -- "$DDA" df incline.yaml -o r.h5
 }
 
+# Friction laws with memory: a run stopped and resumed repeats the whole run
+# (rate and state on the sliding interface, degradation by load cycles
+# elsewhere), and a bad law parameter is one sentence naming file, line and key.
+case_df_resume_friction_laws() {
+  write_incline
+  sed -e 's/  interface: {friction_deg: 20}/  interface: {friction_law: {name: rate_state, mu0: 0.36, a: 0.01, b: 0.015, dc: 1.0e-3, v0: 0.1}}/' \
+      -e 's/  default: {friction_deg: 45}/  default: {friction_law: {name: degradation, phi_peak: 45, phi_residual: 40, measure: cycles, nc: 3}}/' \
+      incline.yaml > rs.yaml
+  grep -q rate_state rs.yaml || fail "sed did not put the law in"
+  "$DDA" run rs.yaml -o out -q --no-vtk || fail "run"
+  "$DDA" df rs.yaml --blocks out/blocks.h5 -o part.h5 --stop-at-step 300 -q || fail "df --stop-at-step"
+  "$DDA" df --resume part.h5 -q || fail "resume"
+  "$DDA" history out/results.h5 --csv > a.csv && "$DDA" history part.h5 --csv > b.csv || fail "history"
+  cmp -s a.csv b.csv || fail "the resumed run differs from the uninterrupted one"
+  /usr/bin/python3 -c "import csv; r=list(csv.DictReader(open('a.csv')))[-1]; assert abs(float(r['slider.ux'])) > 0.01" \
+    || fail "the slider did not slide"
+  sed 's/dc: 1.0e-3/dc: -1.0e-3/' rs.yaml > bad.yaml
+  expect_error 1 "bad.yaml:[0-9]+: joints.interface.friction_law.dc must be > 0, got -0.001\.$" -- \
+    "$DDA" df bad.yaml --blocks out/blocks.h5 -o r.h5
+  sed 's/v0: 0.1}/v0: 0.1, evolution: healing}/' rs.yaml > bad.yaml
+  expect_error 1 "bad.yaml:[0-9]+: joints.interface.friction_law.evolution must be one of aging, slip, got 'healing'\.$" -- \
+    "$DDA" df bad.yaml --blocks out/blocks.h5 -o r.h5
+}
+
 case_df_ana_import() {
   "$DDA" dl "$SRC/tests/data/df_pushblock.geo" -o lines.h5 -q || fail "dl of the .geo"
   "$DDA" dc lines.h5 -o blocks.h5 -q || fail "dc"

@@ -2,7 +2,7 @@
 """Pictures of dda lines and blocks files (HDF5, see docs/formats.md).
 
     dda_plot.py FILE.h5 [FILE2.h5 ...] -o OUT.png|OUT.svg|OUT.pdf
-                [--kind auto|lines|blocks|histograms] [--labels A B ...]
+                [--kind auto|lines|blocks|histograms|compare] [--labels A B ...]
                 [--title T] [--bins N] [--fraction] [--no-names]
 
 --kind auto (default) draws each file as what it is: a lines file as its
@@ -16,6 +16,10 @@ or more blocks files overlaid (counts per bin), e.g. a mechanically layered
 mesh against Shi-Goodman meshes. Block width is the extent of the block along
 the bedding direction (cos d, sin d), d = bedding_dip_deg, exactly as
 `dda stats` (dc/src/stats.cpp) computes it.
+
+--kind compare draws the CSV `dda compare -o` writes: the DDA and the
+reference displacement histories, and below them the relative error in %
+(the seed report's Figure 13); --labels gives the two curve labels.
 
 Needs numpy, h5py and matplotlib (Debian: python3-h5py, python3-matplotlib);
 runs headless (Agg). Any problem is one line on stderr and exit status 2.
@@ -300,6 +304,43 @@ def plot_histograms(models, labels, bins, fraction=False):
     return fig
 
 
+# ------------------------------------------------------------------ compare
+
+
+def plot_compare(path, labels):
+    """`dda compare` output (t, dda, reference, difference, relative_error):
+    both displacement histories above, the relative error (%) below, like the
+    seed report's Figure 13."""
+    import csv
+
+    try:
+        with open(path, newline="") as f:
+            rows = list(csv.DictReader(f))
+        t = np.array([float(r["t"]) for r in rows])
+        dda = np.array([float(r["dda"]) for r in rows])
+        ref = np.array([float(r["reference"]) for r in rows])
+        rel = np.array([float(r["relative_error"]) for r in rows])
+    except (OSError, KeyError, ValueError, TypeError) as exc:
+        fail(f"{path}: cannot read it as a dda compare CSV (t, dda, reference, difference, relative_error): {exc}")
+    if len(t) == 0:
+        fail(f"{path}: has no rows to draw")
+    fig, (top, bottom) = plt.subplots(2, 1, sharex=True, figsize=(7.5, 6.5),
+                                      gridspec_kw={"height_ratios": [2, 1]})
+    top.plot(t, ref, color="black", lw=1.6, label=labels[1])
+    top.plot(t, dda, color="#d62728", lw=1.2, ls="--", label=labels[0])
+    top.set_ylabel("displacement (m)")
+    top.grid(True, alpha=0.3)
+    top.legend(loc="best")
+    bottom.plot(t, 100 * rel, color="#1f77b4", lw=1.0)
+    bottom.axhline(0, color="black", lw=0.6)
+    bottom.set_ylabel("relative error (%)")
+    bottom.set_xlabel("time (s)")
+    bottom.grid(True, alpha=0.3)
+    bottom.set_title(f"final relative error {100 * rel[-1]:+.2f} %", fontsize=9, loc="right")
+    fig.tight_layout()
+    return fig
+
+
 # -------------------------------------------------------------------- main
 
 
@@ -325,9 +366,10 @@ class Parser(argparse.ArgumentParser):
 def main(argv=None):
     p = Parser(prog=PROG, description="Draw dda lines/blocks files or block-size histograms.",
                formatter_class=argparse.RawDescriptionHelpFormatter, epilog=__doc__)
-    p.add_argument("files", nargs="+", metavar="FILE.h5", help="dda-lines or dda-blocks files")
+    p.add_argument("files", nargs="+", metavar="FILE.h5",
+                   help="dda-lines or dda-blocks files (--kind compare: one dda compare CSV)")
     p.add_argument("-o", "--output", required=True, metavar="OUT", help="OUT.png, OUT.svg or OUT.pdf")
-    p.add_argument("--kind", choices=["auto", "lines", "blocks", "histograms"], default="auto")
+    p.add_argument("--kind", choices=["auto", "lines", "blocks", "histograms", "compare"], default="auto")
     p.add_argument("--labels", nargs="+", metavar="LABEL", help="one label per file")
     p.add_argument("--title", help="figure title")
     p.add_argument("--bins", type=int, default=30, help="histogram bins (default 30)")
@@ -342,6 +384,14 @@ def main(argv=None):
     folder = os.path.dirname(os.path.abspath(a.output))
     if not os.path.isdir(folder):
         fail(f"{a.output}: cannot write: the folder {folder} does not exist")
+    if a.kind == "compare":  # one CSV; --labels names the DDA and the reference curves
+        if len(a.files) != 1:
+            fail(f"--kind compare draws one dda compare CSV, got {len(a.files)} files")
+        fig = plot_compare(a.files[0], (a.labels or []) + ["DDA", "reference"][len(a.labels or []):])
+        if a.title:
+            fig.suptitle(a.title)
+        save_atomically(fig, a.output)
+        return 0
     if a.labels is not None and len(a.labels) != len(a.files):
         fail(f"--labels gives {len(a.labels)} labels for {len(a.files)} files")
     if a.bins < 1:

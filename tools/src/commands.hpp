@@ -28,6 +28,7 @@ void add_sliding3d_command(CLI::App& app, const GlobalOptions& global);
 void add_wedge_command(CLI::App& app, const GlobalOptions& global);
 void add_backfit_command(CLI::App& app, const GlobalOptions& global);
 void add_record_command(CLI::App& app, const GlobalOptions& global);
+void add_compare_command(CLI::App& app, const GlobalOptions& global);  // DDA history vs analytical
 
 // The scenario's `output` section (parsed in cmd_run.cpp; docs/scenario.md).
 struct OutputOptions {
