@@ -115,3 +115,27 @@ TEST(Backfit, BadInput) {
   o.phi_max = 30;
   EXPECT_THROW(backfit(shaking_table_wedge(), h, o), dda::InputError);
 }
+
+// Samples every 0.01 s from 0.01 to 12 s, segments cut at 4 and 8 s: a
+// sample at a boundary belongs to the segment that ends there, so the
+// segments hold 400, 400 and 400 samples whatever the fitting step (the
+// time reached by summing steps differs from 4, 8 and 12 by rounding, which
+// used to push boundary samples into the next segment or drop the last one).
+TEST(Backfit, BoundarySamplesBelongToTheSegmentThatEndsThere) {
+  SlidingModel truth = shaking_table_wedge();
+  const SlidingRun run = run_sliding(truth, 1e-4, 12.0);
+  const MeasuredHistory measured = sample(run, 0.01, false);
+  ASSERT_EQ(measured.t.size(), 1200u);
+  for (const double dt : {1e-3, 5e-4, 3e-4, 2e-4, 1e-4}) {
+    BackfitOptions o;
+    o.breaks = {4.0, 8.0};
+    o.dt = dt;
+    o.phi_min = 25;
+    o.phi_max = 35;
+    o.tolerance_deg = 1e-2;
+    const BackfitResult r = backfit(shaking_table_wedge(), measured, o);
+    ASSERT_EQ(r.segments.size(), 3u);
+    for (const SegmentFit& s : r.segments) EXPECT_EQ(s.samples, 400) << "dt " << dt << ", segment at " << s.t0;
+  }
+}
+

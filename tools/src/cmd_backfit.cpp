@@ -91,7 +91,8 @@ void add_backfit_command(CLI::App& app, const GlobalOptions& global) {
       j["regression"] = {{"a", r.regression.a}, {"b", r.regression.b}, {"r2", r.regression.r2}};
     else
       j["regression"] = nullptr;
-    if (r.direct.valid) j["direct"] = {{"a", r.direct.a}, {"b", r.direct.b}, {"rms", r.direct.rms}};
+    if (r.direct.valid)
+      j["direct"] = {{"a", r.direct.a}, {"b", r.direct.b}, {"rms", r.direct.rms}, {"stalled", r.direct.stalled}};
     j["measured_form"] = m.vector_form ? "vector" : "along reference direction";
     if (!opt->output.empty()) write_json(opt->output, j);
     if (opt->json) {
@@ -102,14 +103,21 @@ void add_backfit_command(CLI::App& app, const GlobalOptions& global) {
       for (const auto& sg : r.segments)
         s << "  " << sg.t0 << " .. " << sg.t1 << " s: phi = " << sg.phi_deg << " deg (mu " << sg.mu
           << "), mean speed " << sg.mean_speed << " m/s\n";
+      // mu = a + b ln(v/v_ref), written with the sign of b.
+      auto law = [&](double a, double b) {
+        std::ostringstream l;
+        l << "mu = " << a << (b < 0 ? " - " : " + ") << std::abs(b) << " ln(v/" << fit.v_ref << ")";
+        return l.str();
+      };
       if (r.regression.valid)
-        s << "  regression: mu = " << r.regression.a << " + " << r.regression.b << " ln(v/" << fit.v_ref
-          << "), R^2 = " << r.regression.r2 << "\n";
-      if (r.direct.valid)
-        s << "  direct fit: mu = " << r.direct.a << " + " << r.direct.b << " ln(v/" << fit.v_ref << "), rms "
-          << r.direct.rms << " m\n";
+        s << "  regression: " << law(r.regression.a, r.regression.b) << ", R^2 = " << r.regression.r2 << "\n";
+      if (r.direct.valid) s << "  direct fit: " << law(r.direct.a, r.direct.b) << ", rms " << r.direct.rms << " m\n";
       say(global.quiet, s.str());
     }
+    if (r.direct.stalled)
+      std::cerr << "dda backfit: warning: the direct fit found nothing better than its start (the regression): "
+                   "either that is already the best, or the misfit is flat there (a velocity-weakening law whose "
+                   "friction at --v-min holds the block never lets it slide).\n";
   });
 }
 

@@ -29,13 +29,18 @@ double error2(const MeasuredHistory &m, std::size_t j, const Vec3 &u, const Vec3
 void advance(SlidingSimulator &sim, double t_end, const MeasuredHistory &m, std::size_t &next, Misfit &out) {
   const Vec3 ref = sim.reference_direction();
   const double dt = sim.dt();
-  while (sim.state().t < t_end - 1e-12 * std::max(1.0, t_end)) {
+  // Time is a sum of steps, so it reaches t_end only to within rounding: one
+  // tolerance, far below any step, decides both where the loop stops and
+  // which samples fall in this segment (a sample at a segment boundary
+  // belongs to the segment that ends there, whatever the step).
+  const double tol = 1e-9 * std::max(1.0, std::abs(t_end));
+  while (sim.state().t < t_end - tol) {
     const SlidingState before = sim.state();
     const double h = std::min(dt, t_end - before.t);
     sim.step(h);
     const SlidingState &after = sim.state();
     out.path += (after.u - before.u).norm();
-    while (next < m.t.size() && m.t[next] <= after.t + 1e-12) {
+    while (next < m.t.size() && m.t[next] <= after.t + tol) {
       const double w = (m.t[next] - before.t) / (after.t - before.t);
       const Vec3 u = (1.0 - w) * before.u + w * after.u;
       out.sse += error2(m, next, u, ref);
@@ -45,13 +50,19 @@ void advance(SlidingSimulator &sim, double t_end, const MeasuredHistory &m, std:
     if (sim.finished()) {
       // Lifted off: the block is gone; the remaining samples compare to its
       // last position.
-      while (next < m.t.size() && m.t[next] <= t_end + 1e-12) {
+      while (next < m.t.size() && m.t[next] <= t_end + tol) {
         out.sse += error2(m, next, after.u, ref);
         ++out.count;
         ++next;
       }
       return;
     }
+  }
+  // Samples within the tolerance past the last step's end (at t_end).
+  while (next < m.t.size() && m.t[next] <= t_end + tol) {
+    out.sse += error2(m, next, sim.state().u, ref);
+    ++out.count;
+    ++next;
   }
 }
 
@@ -62,7 +73,7 @@ void set_friction(SlidingSimulator &sim, const FrictionLaw &law) {
 // Samples at or before the start time compare to the start state.
 std::size_t initial_samples(const SlidingSimulator &sim, const MeasuredHistory &m, Misfit &out) {
   std::size_t next = 0;
-  while (next < m.t.size() && m.t[next] <= sim.state().t + 1e-12) {
+  while (next < m.t.size() && m.t[next] <= sim.state().t + 1e-9 * std::max(1.0, std::abs(sim.state().t))) {
     out.sse += error2(m, next, sim.state().u, sim.reference_direction());
     ++out.count;
     ++next;
@@ -201,6 +212,7 @@ BackfitResult backfit(const SlidingModel &model, const MeasuredHistory &measured
       for (const auto &s : result.segments) mu += s.mu;
       start = {mu / static_cast<double>(result.segments.size()), 0.0};
     }
+    const double start_misfit = misfit(start);
     std::array<std::array<double, 2>, 3> x{start, start, start};
     std::array<double, 3> f{};
     // Two passes: the second restarts from the best point with a fresh
@@ -267,6 +279,7 @@ BackfitResult backfit(const SlidingModel &model, const MeasuredHistory &measured
     result.direct.b = x[best][1];
     result.direct.rms = f[best];
     result.direct.valid = true;
+    result.direct.stalled = !(f[best] < start_misfit * (1.0 - 1e-9));
   }
   return result;
 }

@@ -56,6 +56,11 @@ struct SegmentFit {
 struct LogVelocityFit {
   double a = 0, b = 0, r2 = 0, rms = 0;
   bool valid = false;
+  // Direct fit only: the search found nothing better than its start (the
+  // regression): the start is already the best, or the misfit is flat there
+  // (typically a velocity-weakening law whose friction at v_min is so high
+  // that the block never starts to slide, so (a, b) is not a fit at all).
+  bool stalled = false;
 };
 
 struct BackfitResult {
