@@ -15,9 +15,18 @@
 // solves per step, PCG iterations per PCG solve, CHOLMOD analyses per step,
 // threads.
 //
-// `bench_df --blocks FILE.h5 [--dt S] [--steps N]` times the steps of a
-// blocks file instead (default dt 1 ms; fixed points of the file hold their
-// blocks; loads are ignored), on top of any benchmark flag.
+// `bench_df --blocks FILE.h5 [--dt S]` times the steps of a blocks file
+// instead (default dt 1 ms; fixed points of the file hold their blocks;
+// loads are ignored), on top of any benchmark flag.
+//
+// `bench_df --blocks FILE.h5 --scenario S.yaml|MODEL.ana` times the very
+// model `dda df` would run (materials, joints, loading, fixed points and
+// control of the scenario or DDA-for-Windows analysis file), so another DDA
+// program can be timed on the same model; after the timing it prints the
+// model time reached and the final position of every measurement point.
+// Add --benchmark_min_time=N (seconds) or run a fixed number of steps with
+// --steps N; --skip N takes N steps before the timing starts (default 3),
+// e.g. to time a model once its start-up transient has died out.
 #include <benchmark/benchmark.h>
 #include <omp.h>
 
@@ -28,9 +37,16 @@
 #include <string>
 #include <vector>
 
+#include <fstream>
+#include <memory>
+#include <sstream>
+
 #include "dda/common/model_io.hpp"
+#include "dda/common/yaml_reader.hpp"
+#include "dda/df/import_ana.hpp"
 #include "dda/df/linear_solver.hpp"
 #include "dda/df/model.hpp"
+#include "dda/df/scenario.hpp"
 #include "dda/df/simulation.hpp"
 
 namespace {
@@ -84,9 +100,11 @@ const char* solver_name(int code) { return code == 1 ? "cholmod" : code == 2 ? "
 
 // A step that throws (a model that blows up) ends the benchmark with its
 // message instead of aborting the program.
+int g_skip_steps = 3;  // steps taken before timing starts (--skip)
+
 void time_steps(benchmark::State& state, Simulation& sim) {
   try {
-    for (int s = 0; s < 3; ++s) sim.step();
+    for (int s = 0; s < g_skip_steps; ++s) sim.step();
   } catch (const std::exception& e) {
     state.SkipWithError(e.what());
     return;
@@ -161,12 +179,46 @@ BENCHMARK(BM_BrickWallFirstStep)
     ->ArgsProduct({{30, 100, 250, 1000, 5000}, {1, 2}})
     ->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.0);
 
+// The forward-run input of a scenario (.yaml) or DDA-for-Windows analysis
+// (.ana) on the blocks of `blocks_file`, as `dda df` reads it.
+ModelInput scenario_input(const std::string& scenario, const std::string& blocks_file) {
+  const dda::BlockModel blocks = dda::read_blocks_h5(blocks_file);
+  if (scenario.size() > 4 && scenario.substr(scenario.size() - 4) == ".ana") {
+    std::ifstream in(scenario);
+    if (!in) throw dda::InputError(scenario + ": cannot be read.");
+    std::stringstream text;
+    text << in.rdbuf();
+    return import_ana(text.str(), scenario, blocks, blocks_file).scenario.input;
+  }
+  return read_df_scenario(dda::YamlNode::load_file(scenario), blocks, blocks_file).input;
+}
+
+// Times `steps` steps (or as many as Google Benchmark's time allows) of the
+// model and prints where its measurement points end up.
+void register_model(const std::string& label, const Model& model, int steps) {
+  auto* b = benchmark::RegisterBenchmark(("BM_Model/" + label).c_str(), [model](benchmark::State& state) {
+    Simulation sim(model);
+    state.SetLabel(sim.solver().name());
+    time_steps(state, sim);
+    std::fprintf(stderr, "model: %zu steps to t = %.6g s\n", sim.log().size(), sim.time());
+    for (int k = 0; k < static_cast<int>(model.measurements.size()); ++k) {
+      const Vec2 p = sim.measurement_position(k);
+      const Vec2 u = p - model.measurements[static_cast<std::size_t>(k)].position;
+      std::fprintf(stderr, "  %-12s x %.9g  y %.9g  (ux %.6g, uy %.6g)\n", model.measurements[static_cast<std::size_t>(k)].name.c_str(),
+                  p.x(), p.y(), u.x(), u.y());
+    }
+  });
+  b->Unit(benchmark::kMillisecond)->UseRealTime();
+  if (steps > 0) b->Iterations(steps);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   // Our own flags first; the rest goes to Google Benchmark.
-  std::string blocks_file;
+  std::string blocks_file, scenario;
   double dt = 1e-3;
+  int steps = 0;
   std::vector<char*> rest;
   for (int i = 0; i < argc; ++i) {
     const bool has_value = i + 1 < argc;
@@ -174,25 +226,35 @@ int main(int argc, char** argv) {
       blocks_file = argv[++i];
     } else if (std::strcmp(argv[i], "--dt") == 0 && has_value) {
       dt = std::atof(argv[++i]);
+    } else if (std::strcmp(argv[i], "--scenario") == 0 && has_value) {
+      scenario = argv[++i];
+    } else if (std::strcmp(argv[i], "--steps") == 0 && has_value) {
+      steps = std::atoi(argv[++i]);
+    } else if (std::strcmp(argv[i], "--skip") == 0 && has_value) {
+      g_skip_steps = std::max(0, std::atoi(argv[++i]));
     } else {
       rest.push_back(argv[i]);
     }
   }
+  if (!scenario.empty() && blocks_file.empty()) {
+    std::fprintf(stderr, "bench_df: --scenario needs --blocks (the blocks file `dda dc` wrote for it).\n");
+    return 1;
+  }
   if (!blocks_file.empty()) {
-    ModelInput in;
     try {
-      in.geometry = dda::read_blocks_h5(blocks_file);
-      in.control.dt = dt;
-      // Loads need forces from a scenario: skip them here.
-      dda::BlockModel no_loads = in.geometry;
-      std::erase_if(no_loads.points, [](const dda::LocatedPoint& p) { return p.point.kind == dda::PointKind::Load; });
-      add_points_from_block_model(no_loads, {}, in);
-      const Model model = build_model(std::move(in));
-      benchmark::RegisterBenchmark(("BM_BlocksFile/" + blocks_file).c_str(), [model](benchmark::State& state) {
-        Simulation sim(model);
-        state.SetLabel(sim.solver().name());
-        time_steps(state, sim);
-      })->Unit(benchmark::kMillisecond)->UseRealTime();
+      if (!scenario.empty()) {
+        register_model(scenario, build_model(scenario_input(scenario, blocks_file)), steps);
+      } else {
+        ModelInput in;
+        in.geometry = dda::read_blocks_h5(blocks_file);
+        in.control.dt = dt;
+        // Loads need forces from a scenario: skip them here.
+        dda::BlockModel no_loads = in.geometry;
+        std::erase_if(no_loads.points,
+                      [](const dda::LocatedPoint& p) { return p.point.kind == dda::PointKind::Load; });
+        add_points_from_block_model(no_loads, {}, in);
+        register_model(blocks_file, build_model(std::move(in)), steps);
+      }
     } catch (const std::exception& e) {
       std::fprintf(stderr, "bench_df: %s\n", e.what());
       return 1;

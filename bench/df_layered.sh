@@ -1,0 +1,55 @@
+#!/usr/bin/env bash
+# Forward-solver speed on mechanically layered rock (not part of CI).
+#
+# Makes the tunnel_roof model (examples/tunnel_roof: log-normal beds of mean
+# 1 m, cross joints with FSI 1.3, a 10 x 6 m opening, the report's Table 2
+# rock, the same control settings) at three sizes, about 1k, 10k and 50k
+# blocks, by widening and heightening the section, cuts it with `dda dl` and
+# `dda dc`, and times STEPS steps of each from rest with bench_df (the
+# gravity transient, the hardest part of the run: 10-15 solves a step).
+# Prints blocks, contacts, ms per step, the share of contact search, and the
+# growth exponent of the cost per step between sizes.
+#
+#   bash bench/df_layered.sh [STEPS]          # default 30
+#
+# The same bench_df times any model `dda df` runs, e.g. a DDA-for-Windows
+# pair: dda dl model.geo -o l.h5 && dda dc l.h5 -o b.h5 &&
+#   build/bench/bench_df --blocks b.h5 --scenario model.ana --steps 100 --benchmark_filter=BM_Model
+set -euo pipefail
+cd "$(dirname "$0")/.."
+steps="${1:-30}"
+[ -x build/bench/bench_df ] && [ -x build/bin/dda ] || bash scripts/build.sh
+work="${TMPDIR:-/tmp}/dda_bench_layered"
+rm -rf "$work" && mkdir -p "$work"
+printf '%-7s %8s %9s %7s %12s %11s %13s %10s\n' size blocks contacts solves ms_per_step search_pct assembly_pct solve_pct
+prev_n="" prev_ms=""
+# width x height (m) of the section for about 1k, 10k and 50k blocks (the
+# 60 x 40 m example has 2221 blocks: 0.93 per square metre).
+for size in "41 27" "130 85" "290 190"; do
+  read -r w h <<<"$size"
+  name="${w}x${h}"
+  sed -e "s/box: \[0, 0, 60, 40\]/box: [0, 0, $w, $h]/" \
+      -e "s/center: \[30, 13\]/center: [$((w / 2)), $((h / 3))]/" \
+      -e "/^points:/,/^materials:/{/^  - /d}" \
+      -e "s/^points:/points:\n  - {name: crown, kind: measurement, at: [$((w / 2)).1, $((h / 3 + 3)).6]}/" \
+      -e "s/^  max_displacement_ratio: .*/  max_displacement_ratio: 0.0005\n  w0: 20/" \
+      examples/tunnel_roof/tunnel_roof.yaml > "$work/$name.yaml"
+  build/bin/dda dl "$work/$name.yaml" -o "$work/$name.lines.h5" -q
+  build/bin/dda dc "$work/$name.lines.h5" -o "$work/$name.blocks.h5" -q
+  build/bench/bench_df --blocks "$work/$name.blocks.h5" --scenario "$work/$name.yaml" --steps "$steps" \
+      --benchmark_filter=BM_Model --benchmark_format=json > "$work/$name.json" 2> "$work/$name.log"
+  line=$(/usr/bin/python3 - "$work/$name.json" <<'PY'
+import json, sys
+text = open(sys.argv[1]).read()
+b = json.loads(text[text.index("{"):])["benchmarks"][0]
+print(int(b["blocks"]), int(b["contacts"]), round(b["solves_per_step"], 1), round(b["ms_per_step"], 1),
+      round(b["search_pct"], 1), round(b["assembly_pct"], 1), round(b["solve_pct"], 1))
+PY
+)
+  read -r n c s ms sp as so <<<"$line"
+  printf '%-7s %8s %9s %7s %12s %11s %13s %10s\n' "$name" "$n" "$c" "$s" "$ms" "$sp" "$as" "$so"
+  if [ -n "$prev_n" ]; then
+    /usr/bin/python3 -c "import math; print('        cost per step grows as N^%.2f from %s to %s blocks' % (math.log($ms / $prev_ms) / math.log($n / $prev_n), $prev_n, $n))"
+  fi
+  prev_n=$n prev_ms=$ms
+done
