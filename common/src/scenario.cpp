@@ -8,8 +8,8 @@ const std::vector<std::string>& scenario_sections() {
   static const std::vector<std::string> sections = {
       "name",       "description", "seed",     "domain",   "joint_sets", "layering",
       "excavations", "lines",      "traces",   "geometry", "points",     "cutting",
-      "materials",  "joints",      "loading",  "fixed",    "bolts",      "control",
-      "output"};
+      "materials",  "joints",      "loading",  "fixed",    "bolts",      "boundaries",
+      "control",    "output"};
   return sections;
 }
 

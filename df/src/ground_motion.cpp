@@ -74,13 +74,37 @@ std::vector<int> foundation_blocks(const ModelInput& in, const std::vector<std::
   return blocks;
 }
 
-std::vector<std::string> ground_motion_mode_names() { return {"loading", "displacement"}; }
+AccelRecord refined_record(const GroundMotion& g, double h) {
+  AccelRecord r;
+  r.source = g.source;
+  auto push = [&r](double t, const Vec2& a) {
+    r.t.push_back(t);
+    r.a[0].push_back(a.x());
+    r.a[1].push_back(a.y());
+    r.a[2].push_back(0.0);
+  };
+  push(g.t.front(), g.acceleration.front());
+  for (std::size_t i = 1; i < g.t.size(); ++i) {
+    const double span = g.t[i] - g.t[i - 1];
+    const int parts = std::max(1, static_cast<int>(std::ceil(span / h * (1 - 1e-9))));
+    for (int k = 1; k < parts; ++k) {
+      const double w = static_cast<double>(k) / parts;
+      push(g.t[i - 1] + w * span, (1 - w) * g.acceleration[i - 1] + w * g.acceleration[i]);
+    }
+    push(g.t[i], g.acceleration[i]);
+  }
+  return r;
+}
+
+
+std::vector<std::string> ground_motion_mode_names() { return {"loading", "displacement", "incident"}; }
 
 std::unique_ptr<GroundMotionMode> make_ground_motion_mode(const std::string& name) {
   // One line per mode.
   if (name == "loading") return std::make_unique<LoadingMode>();
   if (name == "displacement") return std::make_unique<DisplacementMode>();
-  throw InputError("Unknown earthquake mode '" + name + "' (known: loading, displacement).");
+  if (name == "incident") return std::make_unique<IncidentWaveMode>();
+  throw InputError("Unknown earthquake mode '" + name + "' (known: loading, displacement, incident).");
 }
 
 }  // namespace dda::df

@@ -195,6 +195,25 @@ Model build_model(ModelInput in) {
                                                       " but the model has " + std::to_string(nb) + " blocks.");
     m.body_acceleration = std::move(b);
   }
+  if (in.viscous_boundary) {
+    ViscousBoundary v = *in.viscous_boundary;
+    require(!v.edges.empty(), "The viscous boundary has no edges.");
+    for (const ViscousEdge& e : v.edges) {
+      require(e.block >= 0 && e.block < static_cast<int>(nb),
+              "A viscous boundary edge belongs to block " + std::to_string(e.block) + " but the model has " +
+                  std::to_string(nb) + " blocks.");
+      require(e.edge >= 0 && e.edge < static_cast<int>(m.blocks[e.block].vertices.size()),
+              "A viscous boundary edge of block " + std::to_string(e.block) + " has index " +
+                  std::to_string(e.edge) + ", which the block does not have.");
+    }
+    if (!v.incident_velocity.t.empty()) {
+      std::optional<TimeHistory> h = v.incident_velocity;
+      check_history(h, "The incident wave of the viscous boundary");
+      require(std::any_of(v.edges.begin(), v.edges.end(), [](const ViscousEdge& e) { return e.input; }),
+              "The viscous boundary has an incident wave but no edge it enters through.");
+    }
+    m.viscous_boundary = std::move(v);
+  }
   for (Bolt b : in.bolts) {
     const std::string w = "Bolt '" + b.name + "'";
     b.anchor_block = resolve_block(m.blocks, b.anchor_block, b.anchor, w + " (anchor)");

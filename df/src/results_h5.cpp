@@ -209,8 +209,11 @@ void write_energy(h5::Writer& w, const std::vector<EnergyRecord>& log) {
   col("friction", [](const EnergyRecord& e) { return e.friction; }, "friction dissipation, cumulative");
   col("damping", [](const EnergyRecord& e) { return e.damping; }, "kinetic energy removed by dynamic < 1, cumulative");
   col("breakage", [](const EnergyRecord& e) { return e.breakage; }, "energy released by broken bolts, cumulative");
+  col("radiation", [](const EnergyRecord& e) { return e.radiation; },
+      "energy absorbed by the viscous boundaries, cumulative");
   col("residual", [](const EnergyRecord& e) { return e.residual; },
-      "input - change of stored - friction - damping - breakage: what the integrator and penalties dissipate");
+      "input - change of stored - friction - damping - breakage - radiation: what the integrator and penalties "
+      "dissipate");
 }
 
 void write_bolts(h5::Writer& w, const Simulation& sim) {
@@ -403,6 +406,8 @@ void read_energy(const h5::Reader& r, Results& out) {
              fixed = col("fixed"), bolts = col("bolts"), gravity = col("gravity_work"), load = col("load_work"),
              friction = col("friction"), damping = col("damping"), breakage = col("breakage"),
              residual = col("residual");
+  // Files written before viscous boundaries existed have no radiation column.
+  const auto radiation = r.exists("/energy/radiation") ? col("radiation") : std::vector<double>(n, 0.0);
   out.energy.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     EnergyRecord& e = out.energy[i];
@@ -417,6 +422,7 @@ void read_energy(const h5::Reader& r, Results& out) {
     e.friction = friction[i];
     e.damping = damping[i];
     e.breakage = breakage[i];
+    e.radiation = radiation[i];
     e.residual = residual[i];
   }
 }

@@ -207,9 +207,20 @@ struct Parsed {
   std::vector<Fix> fixes;
   std::vector<std::string> fixed_sides;
   std::optional<YamlNode> fixed_boundary_node;
+  std::vector<std::string> viscous_sides;       // boundaries.viscous
+  std::optional<YamlNode> viscous_node;
   Control control;
   OutputSchedule output;
 };
+
+// One side of the model's bounding box, not listed twice.
+std::string read_side(const YamlNode& s, const std::vector<std::string>& so_far) {
+  const std::string side = s.as_text();
+  if (side != "bottom" && side != "top" && side != "left" && side != "right")
+    s.fail("must be bottom, top, left or right, got '" + side + "'");
+  if (std::find(so_far.begin(), so_far.end(), side) != so_far.end()) s.fail("repeats side " + side);
+  return side;
+}
 
 Parsed parse(const YamlNode& root) {
   Parsed p;
@@ -277,17 +288,21 @@ Parsed parse(const YamlNode& root) {
     }
   }
 
+  // boundaries
+  if (auto b = root.optional_child("boundaries")) {
+    b->allow({"viscous"});
+    if (b->has("viscous")) {
+      p.viscous_node = b->child("viscous");
+      for (const YamlNode& s : b->list("viscous")) p.viscous_sides.push_back(read_side(s, p.viscous_sides));
+    }
+  }
+
   // fixed
   if (auto f = root.optional_child("fixed")) {
     f->allow({"boundary", "points"});
     if (f->has("boundary")) {
       p.fixed_boundary_node = f->child("boundary");
-      for (const YamlNode& s : f->list("boundary")) {
-        const std::string side = s.as_text();
-        if (side != "bottom" && side != "top" && side != "left" && side != "right")
-          s.fail("must be bottom, top, left or right, got '" + side + "'");
-        p.fixed_sides.push_back(side);
-      }
+      for (const YamlNode& s : f->list("boundary")) p.fixed_sides.push_back(read_side(s, p.fixed_sides));
     }
     for (const YamlNode& item : f->list_or_empty("points")) {
       item.allow({"point", "penalty", "displacement"});
@@ -343,14 +358,16 @@ Parsed parse(const YamlNode& root) {
 }
 
 bool has_any_df_section(const YamlNode& root) {
-  for (const char* k : {"materials", "joints", "loading", "fixed", "bolts", "control"})
+  for (const char* k : {"materials", "joints", "loading", "fixed", "bolts", "boundaries", "control"})
     if (root.has(k)) return true;
   return false;
 }
 
 // Fixed points at both ends of every domain-boundary edge on the given sides
 // of the blocks' bounding box.
-void add_boundary_fixes(const BlockModel& blocks, const std::vector<std::string>& sides, ModelInput& in) {
+// The domain-boundary edges (block, edge) lying on one side of the model's
+// bounding box: bottom, top, left or right.
+std::vector<std::pair<int, int>> side_edges(const BlockModel& blocks, const std::string& side) {
   double x0 = std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0;
   for (const Block& b : blocks.blocks)
     for (const Vec2& v : b.vertices) {
@@ -358,31 +375,53 @@ void add_boundary_fixes(const BlockModel& blocks, const std::vector<std::string>
       y0 = std::min(y0, v.y()), y1 = std::max(y1, v.y());
     }
   const double tol = 1e-9 * std::max(x1 - x0, y1 - y0);
-  for (const std::string& side : sides) {
-    auto on = [&](const Vec2& v) {
-      if (side == "bottom") return std::abs(v.y() - y0) <= tol;
-      if (side == "top") return std::abs(v.y() - y1) <= tol;
-      if (side == "left") return std::abs(v.x() - x0) <= tol;
-      return std::abs(v.x() - x1) <= tol;
-    };
-    for (std::size_t b = 0; b < blocks.blocks.size(); ++b) {
-      const Block& blk = blocks.blocks[b];
-      const std::size_t n = blk.vertices.size();
-      std::set<std::size_t> fixed_vertices;
-      for (std::size_t k = 0; k < n; ++k) {
-        const Vec2& a = blk.vertices[k];
-        const Vec2& c = blk.vertices[(k + 1) % n];
-        const bool boundary = blk.edge_set.size() != n || blk.edge_set[k] == kBoundarySet;
-        if (boundary && on(a) && on(c)) {
-          fixed_vertices.insert(k);
-          fixed_vertices.insert((k + 1) % n);
-        }
-      }
-      for (std::size_t k : fixed_vertices)
-        in.fixed_points.push_back({"boundary_" + side + "_" + std::to_string(b) + "_" + std::to_string(k),
-                                   blk.vertices[k], static_cast<int>(b), std::nullopt});
+  auto on = [&](const Vec2& v) {
+    if (side == "bottom") return std::abs(v.y() - y0) <= tol;
+    if (side == "top") return std::abs(v.y() - y1) <= tol;
+    if (side == "left") return std::abs(v.x() - x0) <= tol;
+    return std::abs(v.x() - x1) <= tol;
+  };
+  std::vector<std::pair<int, int>> out;
+  for (std::size_t b = 0; b < blocks.blocks.size(); ++b) {
+    const Block& blk = blocks.blocks[b];
+    const std::size_t n = blk.vertices.size();
+    for (std::size_t k = 0; k < n; ++k) {
+      const bool boundary = blk.edge_set.size() != n || blk.edge_set[k] == kBoundarySet;
+      if (boundary && on(blk.vertices[k]) && on(blk.vertices[(k + 1) % n]))
+        out.emplace_back(static_cast<int>(b), static_cast<int>(k));
     }
   }
+  return out;
+}
+
+void add_boundary_fixes(const BlockModel& blocks, const std::vector<std::string>& sides, ModelInput& in) {
+  for (const std::string& side : sides) {
+    // Both ends of every boundary edge on the side, once per block.
+    std::set<std::pair<int, std::size_t>> fixed_vertices;
+    for (const auto& [b, k] : side_edges(blocks, side)) {
+      const std::size_t n = blocks.blocks[b].vertices.size();
+      fixed_vertices.insert({b, static_cast<std::size_t>(k)});
+      fixed_vertices.insert({b, (static_cast<std::size_t>(k) + 1) % n});
+    }
+    for (const auto& [b, k] : fixed_vertices)
+      in.fixed_points.push_back({"boundary_" + side + "_" + std::to_string(b) + "_" + std::to_string(k),
+                                 blocks.blocks[b].vertices[k], b, std::nullopt});
+  }
+}
+
+// Dashpots on every domain-boundary edge of the given sides; the edges of
+// each side by index into in.viscous_boundary->edges.
+ViscousSides add_viscous_boundary(const BlockModel& blocks, const std::vector<std::string>& sides, ModelInput& in) {
+  ViscousSides by_side;
+  if (sides.empty()) return by_side;
+  ViscousBoundary v;
+  for (const std::string& side : sides)
+    for (const auto& [b, k] : side_edges(blocks, side)) {
+      by_side[side].push_back(v.edges.size());
+      v.edges.push_back({b, k, false});
+    }
+  in.viscous_boundary = std::move(v);
+  return by_side;
 }
 
 }  // namespace
@@ -516,7 +555,10 @@ DfScenario read_df_scenario(const YamlNode& root, const BlockModel& blocks, cons
   add_boundary_fixes(blocks, p.fixed_sides, in);
   if (!p.fixed_sides.empty() && in.fixed_points.empty() && p.fixed_boundary_node)
     p.fixed_boundary_node->fail("fixes nothing: no block has a domain-boundary edge on those sides");
-  if (p.earthquake) apply_earthquake(*p.earthquake, p.fixed_sides, in);  // needs every fixed point
+  const ViscousSides viscous = add_viscous_boundary(blocks, p.viscous_sides, in);
+  if (p.viscous_node && !in.viscous_boundary->edges.size())
+    p.viscous_node->fail("holds nothing: no block has a domain-boundary edge on those sides");
+  if (p.earthquake) apply_earthquake(*p.earthquake, p.fixed_sides, viscous, in);  // needs every fixed point
 
   // Bolts: both ends must lie in blocks, and in different ones.
   for (const auto& [node, bolt] : p.bolts) {

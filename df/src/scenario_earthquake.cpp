@@ -90,7 +90,7 @@ EarthquakeEntry read_earthquake(const YamlNode& n) {
   if (n.has("resample")) s.resample = n.number("resample", Range::positive());
   if (n.has("filter")) s.filter = read_filter(n.child("filter"));
   s.ramp = n.number("ramp", 0.0, Range::non_negative());
-  e.mode = n.choice("mode", {"loading", "displacement"}, "loading");
+  e.mode = n.choice("mode", {"loading", "displacement", "incident"}, "loading");
   s.baseline = static_cast<int>(
       n.integer("baseline", make_ground_motion_mode(e.mode)->default_baseline(), Range::closed(0, 8)));
   if (n.has("foundation")) {
@@ -122,9 +122,33 @@ EarthquakeEntry read_earthquake(const YamlNode& n) {
   return e;
 }
 
-void apply_earthquake(const EarthquakeEntry& e, const std::vector<std::string>& boundary_sides, ModelInput& in) {
+namespace {
+
+// Incident mode: marks the viscous edges of the entry sides as input.
+void mark_input_sides(const EarthquakeEntry& e, const ViscousSides& viscous, ModelInput& in) {
+  std::vector<std::pair<YamlNode, std::string>> sides;
+  if (e.foundation) sides = *e.foundation;
+  else sides.emplace_back(e.node, "bottom");
+  for (const auto& [node, side] : sides) {
+    const auto it = viscous.find(side);
+    if (it == viscous.end()) {
+      const std::string what = "the incident wave enters through side " + side +
+                               ", which boundaries.viscous does not list (add it there)";
+      if (e.foundation) node.fail(what);
+      e.node.fail_key("mode", std::string("incident needs a viscous boundary: ") + what);
+    }
+    for (const std::size_t k : it->second) in.viscous_boundary->edges[k].input = true;
+  }
+}
+
+}  // namespace
+
+void apply_earthquake(const EarthquakeEntry& e, const std::vector<std::string>& boundary_sides,
+                      const ViscousSides& viscous, ModelInput& in) {
   std::vector<std::size_t> foundation;
-  if (!e.foundation) {
+  if (e.mode == "incident") {
+    mark_input_sides(e, viscous, in);
+  } else if (!e.foundation) {
     for (std::size_t k = 0; k < in.fixed_points.size(); ++k) foundation.push_back(k);
   } else {
     std::set<std::size_t> chosen;

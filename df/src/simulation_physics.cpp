@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "dda/df/simulation.hpp"
+#include "dda/df/viscous_boundary.hpp"
 
 namespace dda::df {
 namespace {
@@ -19,7 +20,20 @@ Vec2 step_body_acceleration(const BodyAcceleration& b, double t, double dt, bool
   return settling ? b.history.at(t) : b.history.average(t, t + dt);
 }
 
+// Mean particle velocity of the incident wave over the step; none while
+// settling into equilibrium (time stands still then).
+Vec2 step_incident_velocity(const ViscousBoundary& v, double t, double dt, bool settling) {
+  if (v.incident_velocity.t.empty() || settling) return Vec2::Zero();
+  return v.incident_velocity.average(t, t + dt);
+}
+
 }  // namespace
+
+Eigen::Matrix2d Simulation::edge_dashpot(const ViscousEdge& e) const {
+  const Polygon2& v = blocks_[e.block].vertices;
+  const Vec2 t = v[(e.edge + 1) % v.size()] - v[e.edge];
+  return dashpot_matrix(model_.materials[model_.block_material[e.block]], Vec2(t.y(), -t.x()).normalized());
+}
 
 void Simulation::init_physics() {
   // Called by the constructor (bolts in their initial state) and again after
@@ -61,6 +75,14 @@ void Simulation::assemble_physics(double dt) {
     const Vec2 b = step_body_acceleration(*ba, time_, dt, settling_);
     for (const int i : ba->blocks)
       system_.rhs(i).head<2>() += blocks_[i].geometry.area * model_.materials[model_.block_material[i]].density * b;
+  }
+  if (const auto& vb = model_.viscous_boundary) {
+    const Vec2 v_in = step_incident_velocity(*vb, time_, dt, settling_);
+    for (const ViscousEdge& e : vb->edges) {
+      const BlockState& b = blocks_[e.block];
+      add_viscous_edge_terms(e.block, b.vertices, b.geometry.centroid, e.edge, edge_dashpot(e),
+                             e.input ? v_in : Vec2::Zero(), dt, system_);
+    }
   }
   for (std::size_t k = 0; k < bolts_.size(); ++k) {
     const Bolt& b = model_.bolts[k];
@@ -104,6 +126,16 @@ void Simulation::before_accept(double dt, const Eigen::VectorXd& d, const std::v
     const double p = *f.penalty;
     e.load_work += 0.5 * p * (gap1.squaredNorm() - gap0.squaredNorm()) + p * gap1.dot(u);
   }
+  if (const auto& vb = model_.viscous_boundary) {
+    const Vec2 v_in = step_incident_velocity(*vb, time_, dt, settling_);
+    for (const ViscousEdge& ve : vb->edges) {
+      const BlockState& b = blocks_[ve.block];
+      const ViscousEdgeEnergy w = viscous_edge_energy(b.vertices, b.geometry.centroid, ve.edge, edge_dashpot(ve),
+                                                      ve.input ? v_in : Vec2::Zero(), di(ve.block), dt);
+      e.radiation += w.absorbed;
+      e.load_work += w.input_work;
+    }
+  }
   for (const Contact& c : contacts) {
     if (c.state != ContactState::Sliding) continue;
     const double slip = c.geo.es.dot(di(c.vblock)) + c.geo.gc.dot(di(c.eblock));
@@ -146,7 +178,8 @@ void Simulation::after_accept(double /*dt*/) {
     e.fixed += 0.5 * *f.penalty * (fixed_point_target(f, fixed_anchor_[k], time_) - fixed_pos_[k]).squaredNorm();
   }
   for (std::size_t k = 0; k < bolts_.size(); ++k) e.bolts += bolt_energy(model_.bolts[k], bolts_[k]);
-  e.residual = e.input() - (e.stored() - energy_start_.stored()) - e.friction - e.damping - e.breakage;
+  e.residual =
+      e.input() - (e.stored() - energy_start_.stored()) - e.friction - e.damping - e.breakage - e.radiation;
 }
 
 }  // namespace dda::df

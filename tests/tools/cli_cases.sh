@@ -333,6 +333,56 @@ case_df_resume_friction_laws() {
     "$DDA" df bad.yaml --blocks out/blocks.h5 -o r.h5
 }
 
+# An incident wave through a viscous base (boundaries.viscous, earthquake mode
+# incident): a column of ten bonded 10 x 5 m beds shaken vertically (a P
+# wave; a free-standing column rocks under horizontal shaking) by a Hann
+# velocity pulse of outcrop amplitude 0.02 m/s (v_g = 0.02 sin^2(pi t /
+# 0.1), a_g its derivative). Half of it enters as the incident wave; the free
+# top doubles it back to the outcrop amplitude, 0.02 m/s (within 5 %). Bad
+# entries: the incident mode without a viscous side to enter through.
+case_df_incident_wave() {
+  /usr/bin/python3 - > column.yaml <<'PY'
+print("name: column\nseed: 1\ndomain: {box: [0, 0, 10, 50]}\nlines:")
+for y in range(5, 50, 5): print("  - {set: bed, from: [0, %d], to: [10, %d]}" % (y, y))
+print("""points:
+  - {name: top, kind: measurement, at: [5, 47.5]}
+materials:
+  default: {density: 2000, young: 1.0e9, poisson: 0.25, plane: strain}
+joints:
+  default: {friction_deg: 45}
+  bed: {friction_deg: 45, cohesion: 1.0e9, tensile_strength: 1.0e9, normal_penalty: 1.0e12}
+boundaries:
+  viscous: [bottom]
+loading:
+  gravity: [0, 0]
+  earthquake: {record: pulse.csv, units: m/s2, direction: [0, 1], mode: incident, baseline: 0}
+control: {dt: 0.0005, total_time: 0.25, output_interval: 0.05}
+output: {vtk: false, plots: false}""")
+PY
+  /usr/bin/python3 - > pulse.csv <<'PY'
+import math
+print("t,ax")
+for k in range(201):
+    t = 0.1 * k / 200
+    print("%.6f,%.9f" % (t, 0.02 * math.pi / 0.1 * math.sin(2 * math.pi * t / 0.1)))
+PY
+  "$DDA" run column.yaml -o out -q --no-vtk || fail "run"
+  "$DDA" history out/results.h5 --csv --point top > h.csv || fail "history"
+  /usr/bin/python3 - <<'PY' || fail "the top's peak velocity is not the outcrop amplitude 0.02 m/s within 5 %"
+import csv
+rows = list(csv.DictReader(open("h.csv")))
+peak = max(abs(float(r["top.vy"])) for r in rows)
+print("peak top velocity %.5f m/s (outcrop 0.02)" % peak)
+assert abs(peak - 0.02) <= 0.05 * 0.02
+PY
+  sed 's/  viscous: \[bottom\]/  viscous: [left]/' column.yaml > bad.yaml
+  expect_error 1 "bad.yaml:[0-9]+: loading.earthquake.mode incident needs a viscous boundary: the incident wave enters through side bottom, which boundaries.viscous does not list \(add it there\)\.$" -- \
+    "$DDA" df bad.yaml --blocks out/blocks.h5 -o r.h5
+  sed 's/  viscous: \[bottom\]/  viscous: [bottom, middle]/' column.yaml > bad.yaml
+  expect_error 1 "bad.yaml:[0-9]+: boundaries.viscous.*must be bottom, top, left or right, got 'middle'\.$" -- \
+    "$DDA" df bad.yaml --blocks out/blocks.h5 -o r.h5
+}
+
 case_df_ana_import() {
   "$DDA" dl "$SRC/tests/data/df_pushblock.geo" -o lines.h5 -q || fail "dl of the .geo"
   "$DDA" dc lines.h5 -o blocks.h5 -q || fail "dc"

@@ -10,9 +10,11 @@
 // a body acceleration, m b . centroid displacement, e.g. an earthquake).
 // Losses that are accounted for: friction (sliding force times slip at every
 // sliding contact), damping (the kinetic energy a dynamic parameter k < 1
-// removes, (1 - k^2) of it) and breakage (energy released by broken bolts).
+// removes, (1 - k^2) of it), breakage (energy released by broken bolts) and
+// radiation (what the viscous boundaries let out of the model; the work of
+// an incident wave's traction on them counts with the loads).
 // residual = input work - (stored - stored at the start) - friction -
-// damping - breakage: what the time integrator and the penalty springs
+// damping - breakage - radiation: what the time integrator and the penalty springs
 // dissipate (the implicit step loses pn/2 (change of dn)^2 per step and
 // spring, and a contact that opens loses its spring energy). It is 0 to
 // rounding for blocks without contacts.
@@ -24,7 +26,7 @@ struct EnergyRecord {
   double kinetic = 0, elastic = 0, contact = 0, fixed = 0, bolts = 0;
   // Cumulative since t = 0.
   double gravity_work = 0, load_work = 0;
-  double friction = 0, damping = 0, breakage = 0;
+  double friction = 0, damping = 0, breakage = 0, radiation = 0;
   double residual = 0;
 
   double stored() const { return kinetic + elastic + contact + fixed + bolts; }

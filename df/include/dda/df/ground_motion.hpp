@@ -14,6 +14,10 @@
 //  * displacement (ground_motion_displacement.cpp): the foundation's fixed
 //    points follow the ground displacement d_g(t), the acceleration
 //    integrated twice (trapezoidal rule, from rest), as moving fixed points.
+//  * incident (ground_motion_incident.cpp): the record is the outcrop
+//    motion of the base rock, and half its velocity enters the model as an
+//    incident wave through the viscous boundary of the base
+//    (viscous_boundary.hpp), which also lets out what comes back down.
 // For a rigid foundation the two give the same motion relative to the
 // foundation, as long as they see the same a_g: the baseline correction
 // (which changes a_g by -P''(t), record.hpp) is part of the processing and
@@ -57,6 +61,12 @@ struct GroundMotion {
 // with a z column (the 2D model has no use for it).
 GroundMotion load_ground_motion(const GroundMotionSpec& spec);
 
+// The record with every interval split into equal parts no longer than `h`
+// (linear interpolation, original samples kept): the trapezoidal rule then
+// integrates a coarse record (an AT2 file at 0.01-0.02 s) as finely as the
+// solver steps through it.
+AccelRecord refined_record(const GroundMotion& motion, double h);
+
 // a_g(t) as a piecewise-linear table, zero before the first and after the
 // last sample (a zero row is added just outside a sample that is not zero).
 TimeHistory acceleration_history(const GroundMotion& motion, double factor = 1.0);
@@ -94,7 +104,18 @@ class DisplacementMode final : public GroundMotionMode {
   void apply(const GroundMotion& motion, const std::vector<std::size_t>& foundation, ModelInput& in) const override;
 };
 
-// "loading" or "displacement"; InputError naming the known modes otherwise.
+// The incident wave v_in(t) = v_g(t) / 2 on the viscous boundary edges
+// marked as input (ground_motion_incident.cpp); the foundation is not used.
+// Baseline correction of degree 3 by default, so that the base is not
+// pushed on for ever by the record's mean velocity.
+class IncidentWaveMode final : public GroundMotionMode {
+ public:
+  std::string name() const override { return "incident"; }
+  int default_baseline() const override { return 3; }
+  void apply(const GroundMotion& motion, const std::vector<std::size_t>& foundation, ModelInput& in) const override;
+};
+
+// "loading", "displacement" or "incident"; InputError naming the known modes otherwise.
 std::unique_ptr<GroundMotionMode> make_ground_motion_mode(const std::string& name);
 std::vector<std::string> ground_motion_mode_names();
 

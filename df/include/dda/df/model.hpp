@@ -95,6 +95,22 @@ struct BodyAcceleration {
   std::vector<int> blocks;           // the blocks it acts on
 };
 
+// Non-reflecting boundary (viscous_boundary.hpp): Lysmer-Kuhlemeyer
+// dashpots on edges of the model's outer boundary, of the material of the
+// block they belong to, and optionally an incident wave entering through
+// some of them (a compliant base for seismic input).
+struct ViscousEdge {
+  int block = -1;
+  int edge = -1;                     // vertex edge -> edge + 1 of the block
+  bool input = false;                // the incident wave enters here
+};
+struct ViscousBoundary {
+  std::vector<ViscousEdge> edges;
+  // v_in(t), m/s, model axes: particle velocity of the incident wave (half
+  // the outcrop motion). No rows: no incident wave.
+  TimeHistory incident_velocity;
+};
+
 // Where a fixed point's spring pulls it at time t: its initial position
 // `anchor`, plus u(t) for a moving one.
 Vec2 fixed_point_target(const FixedPoint& f, const Vec2& anchor, double t);
@@ -158,6 +174,7 @@ struct ModelInput {
   std::vector<FixedPoint> fixed_points;
   std::vector<PointLoad> loads;
   std::optional<BodyAcceleration> body_acceleration;  // e.g. an earthquake in loading mode
+  std::optional<ViscousBoundary> viscous_boundary;
   std::vector<Bolt> bolts;
   std::vector<MeasurementPoint> measurements;
   std::vector<Vector6d> initial_velocity;   // empty, or one per block [u, v, r, ex, ey, gxy] rates
@@ -182,6 +199,7 @@ struct Model {
   std::vector<FixedPoint> fixed_points;     // block and penalty resolved
   std::vector<PointLoad> loads;             // block resolved
   std::optional<BodyAcceleration> body_acceleration;  // blocks checked, sorted, unique
+  std::optional<ViscousBoundary> viscous_boundary;    // edges checked
   std::vector<Bolt> bolts;                  // blocks resolved
   std::vector<MeasurementPoint> measurements;
   std::vector<Vector6d> initial_velocity;   // one per block

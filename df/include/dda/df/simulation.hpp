@@ -143,6 +143,8 @@ class Simulation {
   void after_accept(double dt);
   void settle();
   void check_runaway(const Eigen::VectorXd& d, double moved, double dt, bool at_min_dt) const;
+  // Dashpot matrix of a viscous boundary edge in the current configuration.
+  Eigen::Matrix2d edge_dashpot(const ViscousEdge& e) const;
 
   Model model_;
   std::unique_ptr<LinearSolver> solver_;

@@ -1,0 +1,133 @@
+// Wave propagation through blocks and the viscous boundary
+// (viscous_boundary.hpp): arrival times against the wave speeds of E, nu and
+// rho, the doubling at a free surface, and the absorption of what comes back
+// to the base. The models are columns and layers of glued blocks
+// (wave_test_models.hpp) with an incident Hann pulse entering through a
+// viscous base.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "dda/df/simulation.hpp"
+#include "dda/df/viscous_boundary.hpp"
+#include "wave_test_models.hpp"
+
+namespace dda::df {
+namespace {
+
+using test::ColumnSpec;
+
+struct Peak {
+  double time = 0, value = 0;
+};
+
+// Largest |v . dir| of a history, its time refined by a parabola through the
+// sample and its two neighbours (the steps are a few per cent of the
+// travel times measured).
+Peak peak_of(const std::vector<MeasurementSample>& h, const Vec2& dir) {
+  std::size_t k = 0;
+  for (std::size_t i = 1; i < h.size(); ++i)
+    if (std::abs(dir.dot(h[i].velocity)) > std::abs(dir.dot(h[k].velocity))) k = i;
+  Peak p{h[k].time, dir.dot(h[k].velocity)};
+  if (k > 0 && k + 1 < h.size()) {
+    const double a = dir.dot(h[k - 1].velocity), b = p.value, c = dir.dot(h[k + 1].velocity);
+    const double dt = h[k + 1].time - h[k].time, denom = a - 2 * b + c;
+    if (denom != 0 && std::abs(h[k].time - h[k - 1].time - dt) < 1e-9 * dt) p.time += 0.5 * dt * (a - c) / denom;
+  }
+  return p;
+}
+
+double max_stored(const Simulation& sim) {
+  double e = 0;
+  for (const EnergyRecord& r : sim.energy_log()) e = std::max(e, r.stored());
+  return e;
+}
+
+// A single column of 40 blocks of 2 x 2.5 m (100 m), plane stress, a
+// vertical (P) pulse of 0.01 m/s and 0.1 s (wavelength 71 m, 28 blocks).
+// The column's sides are free, so it is a bar: the wave travels at
+// sqrt(E / rho) (plane stress; E / (1 - nu^2) in plane strain), 707.1 m/s
+// for E = 1 GPa, rho = 2000, over the 97.5 m from the base to the top
+// block's centroid. At the free top the particle velocity doubles
+// (incident + reflected, 2 x 0.01 m/s: the top block's centroid is 1.25 m
+// below the surface, 2 ms of delay against a 100 ms pulse). The reflected
+// pulse then runs down and leaves through the base: what stays in the
+// column must be below 5 % of the largest energy it held (the issue's
+// criterion); with the base's impedance rho Vp against the bar's rho c_bar
+// the reflection coefficient is (707 - 730) / (707 + 730) = -1.6 %, 0.03 %
+// of the energy.
+TEST(Waves, PPulseInABarArrivesDoublesAtTheTopAndLeavesThroughTheBase) {
+  ColumnSpec c;
+  const double amplitude = 0.01, tau = 0.1;
+  ModelInput in = test::wave_column(c, test::hann_pulse(amplitude, tau, Vec2(0, 1)));
+  in.control.dt = 5e-4;
+  in.control.total_time = 0.6;  // out at the top at 0.19 s, back at the base by 0.39 s, gone by 0.5 s
+  Simulation sim(build_model(in));
+  sim.run();
+
+  const double bar_speed = std::sqrt(c.material.young / c.material.density);
+  const double distance = c.blocks * c.height - 0.5 * c.height;
+  const Peak top = peak_of(sim.histories().back(), Vec2(0, 1));
+  EXPECT_NEAR(top.time - 0.5 * tau, distance / bar_speed, 0.02 * distance / bar_speed);
+  EXPECT_NEAR(top.value, 2 * amplitude, 0.05 * 2 * amplitude);
+
+  const EnergyRecord& last = sim.energy_log().back();
+  EXPECT_LT(last.stored(), 0.05 * max_stored(sim));
+  // Where the energy went: nearly all of what the wave brought in left
+  // through the base again.
+  EXPECT_GT(last.radiation, 0.9 * last.load_work);
+}
+
+// A layer 21 blocks wide (105 m) and 24 high (60 m), plane strain, glued:
+// the blocks are held laterally by their neighbours, so a vertical pulse is
+// a P-wave of the medium, Vp = sqrt(E (1 - nu) / ((1 + nu)(1 - 2 nu) rho)) =
+// 774.6 m/s, and a horizontal one an S-wave, Vs = sqrt(E / (2 (1 + nu) rho))
+// = 447.2 m/s (E = 1 GPa, nu = 0.25, rho = 2000). Measured between two
+// receivers of the middle column, rows 4 and 16 (30 m apart), as a 0.06 s
+// pulse passes them on its way up (the free sides' own waves reach the
+// middle later; in a layer 11 blocks wide they did not, and S came out
+// 2.3 % fast). Obtained: P 776.9 m/s (+0.3 %), S 454.9 m/s (+1.7 %: the
+// blocks carry the complementary shear only through the shear springs of
+// their side contacts).
+TEST(Waves, PAndSPulsesCrossALayerAtTheMediumsWaveSpeeds) {
+  ColumnSpec c;
+  c.blocks = 24;
+  c.columns = 21;
+  c.width = 5;
+  c.material.plane = PlaneMode::Strain;
+  const double tau = 0.06;
+  for (const bool shear : {false, true}) {
+    const Vec2 dir = shear ? Vec2(1, 0) : Vec2(0, 1);
+    ModelInput in = test::wave_column(c, test::hann_pulse(0.01, tau, dir));
+    in.control.dt = 2.5e-4;
+    in.control.total_time = shear ? 0.17 : 0.11;  // the pulse has passed row 14, not yet come back
+    Simulation sim(build_model(in));
+    sim.run();
+    const double speed = shear ? s_wave_speed(c.material) : p_wave_speed(c.material);
+    const double measured = 12 * c.height / (peak_of(sim.histories()[16], dir).time -
+                                             peak_of(sim.histories()[4], dir).time);
+    EXPECT_NEAR(measured, speed, 0.02 * speed) << (shear ? "S" : "P");
+    RecordProperty(shear ? "s_speed" : "p_speed", std::to_string(measured));
+  }
+}
+
+// The wave speeds of the formulas in viscous_boundary.hpp, by hand: E = 1
+// GPa, nu = 0.25, rho = 2000 kg/m^3.
+TEST(Waves, WaveSpeedsOfPlaneStrainAndPlaneStress) {
+  Material m = test::rock(2000, 1e9);
+  m.plane = PlaneMode::Strain;
+  EXPECT_NEAR(p_wave_speed(m), std::sqrt(1e9 * 0.75 / (1.25 * 0.5 * 2000)), 1e-9);  // 774.597
+  m.plane = PlaneMode::Stress;
+  EXPECT_NEAR(p_wave_speed(m), std::sqrt(1e9 / (0.9375 * 2000)), 1e-9);  // 730.297
+  EXPECT_NEAR(s_wave_speed(m), std::sqrt(1e9 / (2.5 * 2000)), 1e-9);     // 447.214
+  // The dashpots of a horizontal base (outward normal -y): rho Vp on the
+  // vertical motion, rho Vs on the horizontal.
+  const Eigen::Matrix2d d = dashpot_matrix(m, Vec2(0, -1));
+  EXPECT_NEAR(d(0, 0), 2000 * s_wave_speed(m), 1e-6);
+  EXPECT_NEAR(d(1, 1), 2000 * p_wave_speed(m), 1e-6);
+  EXPECT_NEAR(d(0, 1), 0, 1e-9);
+}
+
+}  // namespace
+}  // namespace dda::df

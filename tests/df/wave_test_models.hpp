@@ -1,0 +1,97 @@
+#pragma once
+// Columns of blocks for the wave-propagation tests: a stack of n blocks of
+// w x h from y = 0, glued to each other (their interfaces are DC's
+// artificial cuts, so the contacts carry tension and shear without limit),
+// no gravity, a viscous boundary on the base through which an incident wave
+// enters, and a measurement point at the centroid of every block.
+#include <cmath>
+#include <string>
+
+#include "dda/common/line_model.hpp"
+#include "dda/df/model.hpp"
+#include "df_test_models.hpp"
+
+namespace dda::df::test {
+
+struct ColumnSpec {
+  int blocks = 40;                   // rows
+  int columns = 1;                   // blocks side by side in each row (glued)
+  bool viscous_sides = false;        // dashpots on the left and right sides too
+  double width = 2.0, height = 2.5;  // m, of each block
+  Material material = rock(2000, 1e9);
+  double penalty = 0;                // N/m of the glued interfaces; 0: 1000 E
+  int joint_above = -1;              // a real joint (set 0) on top of this block instead of glue
+  JointProperties joint;             // its properties
+};
+
+// A half-sine-squared (Hann) pulse of peak `amplitude` and duration `tau`
+// along `direction`, as a finely sampled table.
+inline TimeHistory hann_pulse(double amplitude, double tau, const Vec2& direction) {
+  TimeHistory h;
+  const int n = 400;
+  for (int k = 0; k <= n; ++k) {
+    const double t = tau * k / n;
+    const double s = std::sin(kPi * t / tau);
+    h.t.push_back(t);
+    h.value.push_back(amplitude * s * s * direction);
+  }
+  h.t.push_back(tau * 1.5);  // and rest
+  h.value.push_back(Vec2::Zero());
+  return h;
+}
+
+// A sine of `amplitude` and angular frequency `omega` for `cycles` cycles,
+// ramped in and out over one cycle each with a Hann taper.
+inline TimeHistory tapered_sine(double amplitude, double omega, int cycles, const Vec2& direction) {
+  TimeHistory h;
+  const double period = 2 * kPi / omega, total = cycles * period;
+  const int n = 80 * cycles;
+  for (int k = 0; k <= n; ++k) {
+    const double t = total * k / n;
+    double taper = 1;
+    if (t < period) taper = std::pow(std::sin(0.5 * kPi * t / period), 2);
+    if (t > total - period) taper = std::pow(std::sin(0.5 * kPi * (total - t) / period), 2);
+    h.t.push_back(t);
+    h.value.push_back(amplitude * taper * std::sin(omega * t) * direction);
+  }
+  return h;
+}
+
+// Block index of row k, column j.
+inline int column_block(const ColumnSpec& c, int k, int j) { return k * c.columns + j; }
+
+// With several columns the sides are viscous too (no input), so that what
+// reaches them leaves; the measurement points are those of the middle
+// column (point k: row k).
+inline ModelInput wave_column(const ColumnSpec& c, const TimeHistory& incident) {
+  ModelInput in;
+  ViscousBoundary v;
+  for (int k = 0; k < c.blocks; ++k)
+    for (int j = 0; j < c.columns; ++j) {
+      Block b = make_block(rectangle(j * c.width, k * c.height, c.width, c.height), kBoundarySet);
+      // Edges: 0 bottom, 1 right, 2 top, 3 left.
+      if (k > 0) b.edge_set[0] = k - 1 == c.joint_above ? 0 : kArtificialSet;
+      if (k < c.blocks - 1) b.edge_set[2] = k == c.joint_above ? 0 : kArtificialSet;
+      if (j > 0) b.edge_set[3] = kArtificialSet;
+      if (j < c.columns - 1) b.edge_set[1] = kArtificialSet;
+      const int id = column_block(c, k, j);
+      if (k == 0) v.edges.push_back({id, 0, true});
+      if (c.viscous_sides && j == 0) v.edges.push_back({id, 3, false});
+      if (c.viscous_sides && j == c.columns - 1) v.edges.push_back({id, 1, false});
+      in.geometry.blocks.push_back(b);
+    }
+  const int mid = c.columns / 2;
+  for (int k = 0; k < c.blocks; ++k)
+    in.measurements.push_back({"b" + std::to_string(k), {(mid + 0.5) * c.width, (k + 0.5) * c.height},
+                               column_block(c, k, mid)});
+  in.geometry.sets = {{"J", "user"}};
+  in.materials = {c.material};
+  in.joint_sets = {c.joint};
+  in.default_joint.normal_penalty = c.penalty > 0 ? c.penalty : 1000 * c.material.young;
+  in.gravity = {0, 0};
+  v.incident_velocity = incident;
+  in.viscous_boundary = v;
+  return in;
+}
+
+}  // namespace dda::df::test
