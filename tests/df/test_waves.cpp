@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 
 #include "dda/df/simulation.hpp"
 #include "dda/df/viscous_boundary.hpp"
@@ -110,6 +111,97 @@ TEST(Waves, PAndSPulsesCrossALayerAtTheMediumsWaveSpeeds) {
     EXPECT_NEAR(measured, speed, 0.02 * speed) << (shear ? "S" : "P");
     RecordProperty(shear ? "s_speed" : "p_speed", std::to_string(measured));
   }
+}
+
+// ../shared/validation/CASES.md V9: a harmonic P wave crossing one joint of
+// normal stiffness kappa (Pa/m) in a bar of impedance Z = rho c is
+// transmitted with |T| = 1 / sqrt(1 + (omega Z / 2 kappa)^2): 0.7071, 0.8944
+// and 0.9701 for kappa / (omega Z) = 0.5, 1 and 2. The bar: 40 glued blocks
+// of 2 x 2.5 m (plane stress, c = sqrt(E / rho) = 707.1 m/s), the joint on
+// top of block 19, viscous dashpots on the base (the input, and the exit
+// of what the joint reflects) and on the top (the exit of what it
+// transmits), so the receiver at block 30 sees the transmitted wave alone.
+// Mapping of kappa to the solver: the joint is two vertex-to-edge contacts
+// (the corners), each standing for half the 2 m interface, so each has the
+// normal penalty kappa * 1 m (N/m per unit thickness). The input: 8 cycles
+// of 5 Hz (wavelength 141 m, 57 blocks) with a one-cycle Hann taper at each
+// end; |T| is the largest velocity at the receiver over the input
+// amplitude. The joint is bonded (cohesion and tensile strength far above
+// the wave's stresses) so it carries the tensile half-cycles too.
+TEST(Waves, V9JointTransmissionMatchesTheDisplacementDiscontinuityModel) {
+  ColumnSpec c;
+  c.viscous_top = true;
+  c.joint_above = 19;
+  c.joint.cohesion = 1e12;
+  c.joint.tensile_strength = 1e12;
+  const double amplitude = 0.01, omega = 2 * kPi * 5;
+  const double impedance = c.material.density * std::sqrt(c.material.young / c.material.density);
+  for (const double ratio : {0.5, 1.0, 2.0}) {
+    const double kappa = ratio * omega * impedance;
+    c.joint.normal_penalty = kappa * 0.5 * c.width;
+    ModelInput in = test::wave_column(c, test::tapered_sine(amplitude, omega, 8, Vec2(0, 1)));
+    in.control.dt = 1e-3;
+    in.control.total_time = 1.8;  // 1.6 s of input plus the 0.11 s to the receiver
+    Simulation sim(build_model(in));
+    sim.run();
+    double peak = 0;
+    for (const MeasurementSample& s : sim.histories()[30]) peak = std::max(peak, std::abs(s.velocity.y()));
+    const double expected = 1 / std::sqrt(1 + std::pow(1 / (2 * ratio), 2));
+    EXPECT_NEAR(peak / amplitude, expected, 0.05 * expected) << "kappa / (omega Z) = " << ratio;
+    RecordProperty(ratio == 0.5 ? "T_at_0.5" : ratio == 1.0 ? "T_at_1" : "T_at_2", std::to_string(peak / amplitude));
+  }
+}
+
+// Amplitude of the Fourier transform of v(t) (one component) at frequency
+// f, by the trapezoidal rule over the non-uniform samples.
+double fourier_amplitude(const std::vector<MeasurementSample>& h, const Vec2& dir, double f) {
+  std::complex<double> sum = 0;
+  for (std::size_t i = 1; i < h.size(); ++i) {
+    const double t0 = h[i - 1].time, t1 = h[i].time;
+    const std::complex<double> a = dir.dot(h[i - 1].velocity) * std::exp(std::complex<double>(0, -2 * kPi * f * t0));
+    const std::complex<double> b = dir.dot(h[i].velocity) * std::exp(std::complex<double>(0, -2 * kPi * f * t1));
+    sum += 0.5 * (t1 - t0) * (a + b);
+  }
+  return std::abs(sum);
+}
+
+// A uniform elastic column on a rigid base resonates first at c / (4 H):
+// the base (the bottom edge of the lowest block, y = 0) is moved by two
+// fixed points along the integral of a short vertical Hann velocity pulse
+// (0.05 s: a smooth spectrum far beyond the resonance) and then held; the
+// column (40 glued blocks, 100 m, plane stress, c = sqrt(E / rho) = 707.1
+// m/s, no dashpots) rings undamped, and the Fourier amplitude of its top
+// over 10 s peaks at f1 = 707.1 / 400 = 1.768 Hz (within 1 %; located on a
+// 0.002 Hz grid). nu = 0: with nu = 0.25 the shear springs of the glued
+// interfaces tie the Poisson expansions of neighbouring blocks together and
+// stiffen the bar part of the way from E to E / (1 - nu^2): 1.804 Hz.
+// Obtained: 1.768 Hz.
+TEST(Waves, ColumnOnARigidBaseResonatesAtAQuarterWavelength) {
+  ColumnSpec c;
+  c.viscous_base = false;
+  c.material.poisson = 0;
+  ModelInput in = test::wave_column(c, TimeHistory{});
+  TimeHistory lift;
+  const TimeHistory pulse = test::hann_pulse(1e-3, 0.05, Vec2(0, 1));
+  double u = 0;
+  for (std::size_t k = 0; k < pulse.t.size(); ++k) {
+    if (k > 0) u += 0.5 * (pulse.t[k] - pulse.t[k - 1]) * (pulse.value[k].y() + pulse.value[k - 1].y());
+    lift.t.push_back(pulse.t[k]);
+    lift.value.emplace_back(0, u);
+  }
+  for (const double x : {0.0, c.width}) in.fixed_points.push_back({"base", {x, 0}, 0, std::nullopt, lift});
+  in.control.dt = 2e-3;
+  in.control.total_time = 10;
+  Simulation sim(build_model(in));
+  sim.run();
+  double best = 0, f1 = 0;
+  for (double f = 0.5; f <= 3.0; f += 0.002) {
+    const double a = fourier_amplitude(sim.histories().back(), Vec2(0, 1), f);
+    if (a > best) best = a, f1 = f;
+  }
+  const double expected = std::sqrt(c.material.young / c.material.density) / (4 * c.blocks * c.height);
+  EXPECT_NEAR(f1, expected, 0.01 * expected);
+  RecordProperty("f1", std::to_string(f1));
 }
 
 // The wave speeds of the formulas in viscous_boundary.hpp, by hand: E = 1

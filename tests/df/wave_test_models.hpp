@@ -17,6 +17,8 @@ struct ColumnSpec {
   int blocks = 40;                   // rows
   int columns = 1;                   // blocks side by side in each row (glued)
   bool viscous_sides = false;        // dashpots on the left and right sides too
+  bool viscous_top = false;          // and on the top (the column then has no free surface)
+  bool viscous_base = true;          // false: no dashpots and no incident wave at all
   double width = 2.0, height = 2.5;  // m, of each block
   Material material = rock(2000, 1e9);
   double penalty = 0;                // N/m of the glued interfaces; 0: 1000 E
@@ -75,22 +77,25 @@ inline ModelInput wave_column(const ColumnSpec& c, const TimeHistory& incident) 
       if (j > 0) b.edge_set[3] = kArtificialSet;
       if (j < c.columns - 1) b.edge_set[1] = kArtificialSet;
       const int id = column_block(c, k, j);
-      if (k == 0) v.edges.push_back({id, 0, true});
+      if (k == 0 && c.viscous_base) v.edges.push_back({id, 0, true});
+      if (c.viscous_top && k == c.blocks - 1) v.edges.push_back({id, 2, false});
       if (c.viscous_sides && j == 0) v.edges.push_back({id, 3, false});
       if (c.viscous_sides && j == c.columns - 1) v.edges.push_back({id, 1, false});
       in.geometry.blocks.push_back(b);
     }
   const int mid = c.columns / 2;
-  for (int k = 0; k < c.blocks; ++k)
-    in.measurements.push_back({"b" + std::to_string(k), {(mid + 0.5) * c.width, (k + 0.5) * c.height},
-                               column_block(c, k, mid)});
+  for (int k = 0; k < c.blocks; ++k) {
+    std::string name = "b";  // (appending, not "b" + ...: GCC 12 warns falsely on that)
+    name += std::to_string(k);
+    in.measurements.push_back({name, {(mid + 0.5) * c.width, (k + 0.5) * c.height}, column_block(c, k, mid)});
+  }
   in.geometry.sets = {{"J", "user"}};
   in.materials = {c.material};
   in.joint_sets = {c.joint};
   in.default_joint.normal_penalty = c.penalty > 0 ? c.penalty : 1000 * c.material.young;
   in.gravity = {0, 0};
   v.incident_velocity = incident;
-  in.viscous_boundary = v;
+  if (!v.edges.empty()) in.viscous_boundary = v;
   return in;
 }
 
