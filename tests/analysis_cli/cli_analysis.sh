@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Command-line tests of the analytical subcommands (newmark, sliding3d, wedge,
-# backfit, record), one function per case; expected numbers from
-# /work/shared/validation/CASES.md (V3, V4, V5) as noted in each case.
+# backfit, record, compare, spectra), one function per case; expected numbers
+# from /work/shared/validation/CASES.md (V3, V4, V5) or closed forms, as noted
+# in each case.
 # Usage: cli_analysis.sh DDA_BINARY CASE WORKDIR SOURCE_DIR
 set -uo pipefail
 DDA="$1"; CASE="$2"; WORK="$3"; SRC="$4"
@@ -20,6 +21,12 @@ expect_error() {
   grep -qE -- "$pattern" err.txt || fail "stderr '$(cat err.txt)' does not match '$pattern'"
 }
 
+# A command-line usage error: exit status 2 (CLI11 prints the problem and a hint).
+expect_usage_error() {
+  "$@" >out.txt 2>err.txt; local rc=$?
+  [ "$rc" -eq 2 ] || fail "exit $rc, expected 2 for a usage error; stderr: $(cat err.txt)"
+}
+
 json_get() { /usr/bin/python3 -c "import json,sys; d=json.load(open(sys.argv[1])); print(eval(sys.argv[2], {'d': d}))" "$@"; }
 
 # near VALUE EXPECTED TOL WHAT: |VALUE - EXPECTED| <= TOL
@@ -34,13 +41,20 @@ import csv,sys
 rows=list(csv.DictReader(open(sys.argv[1])))
 print(rows[-1][sys.argv[2]])" "$1" "$2"; }
 
+# CSV row N (0 = the first data row), column by header name.
+row_col() { /usr/bin/python3 -c "
+import csv,sys
+print(list(csv.DictReader(open(sys.argv[1])))[int(sys.argv[2])][sys.argv[3]])" "$1" "$2" "$3"; }
+
 case_help() {
-  for sub in newmark sliding3d wedge backfit record compare; do
+  for sub in newmark sliding3d wedge backfit record compare spectra; do
     "$DDA" $sub --help > h.txt 2>&1 || fail "dda $sub --help exited non-zero"
     grep -q "Usage" h.txt || fail "dda $sub --help prints no usage"
   done
   "$DDA" sliding3d --help | grep -q "ground" || fail "sliding3d --help does not explain ground/body input"
   "$DDA" newmark --help | grep -q "tan(phi - dip)" || fail "newmark --help does not give the yield formula"
+  "$DDA" spectra --help | grep -q "central difference of the velocity" || fail "spectra --help does not say how acceleration is made"
+  "$DDA" spectra --help | grep -q "hv; --response T (s), SD" || fail "spectra --help does not document the CSV columns"
 }
 
 # CASES.md V4: planes 51.4/065.8, 51.4/295.2.
@@ -260,6 +274,155 @@ case_earthquake_errors() {
   sed 's/units: m\/s2}/units: g, mode: displacement, foundation: [top]}/' v3.yaml > found.yaml
   expect_error 1 "found.yaml:[0-9]+: loading.earthquake.foundation\[0\] names side top, which fixed.boundary does not hold" \
     -- "$DDA" run found.yaml -o o3
+}
+
+# ---------------------------------------------------------------- spectra
+
+# Records: tests/data/rec_sine2hz.csv is 0.25 g sin(2 pi 2 t) along y, 2001
+# samples at 5 ms (20 whole cycles in the first 2000); tests/data/rec_small.at2
+# is 0.1 g sin(2 pi t), 401 samples at 10 ms (4 cycles).
+case_spectra_record() {
+  # Untapered, unsmoothed: the sine falls on bin 20 of 2001 (f = 20 / (2001 * 0.005 s) = 1.9990 Hz) with
+  # A = dt |X| = a (2000 dt) / 2 = 0.25 * 9.81 * 10 / 2 = 12.2625 m/s (the last sample is 0); the off-bin
+  # leakage of 2 Hz against 1.999 Hz is below 1e-3. Sine scale: a = 2.4525 m/s^2, times 2000/2001.
+  "$DDA" spectra "$DATA/rec_sine2hz.csv" --units g --component y --taper none --smooth 0 --json > s.json \
+    || fail "spectrum of a record"
+  near "$(json_get s.json "d['peak_frequency']")" 1.9990005 1e-6 "peak frequency"
+  near "$(json_get s.json "d['peak_value']")" 12.2625 0.012 "Fourier amplitude at 2 Hz"
+  near "$(json_get s.json "d['nyquist']")" 99.9500250 1e-6 "Nyquist (1000 / (2001 * 0.005 s))"
+  "$DDA" spectra "$DATA/rec_sine2hz.csv" --units g --component y --taper none --smooth 0 --amplitude sine \
+    --json > sine.json || fail "sine scale"
+  near "$(json_get sine.json "d['peak_value']")" 2.4513 0.0025 "sine amplitude"
+  # Smoothed, every CSV row inside --fmin/--fmax; a figure.
+  "$DDA" spectra "$DATA/rec_sine2hz.csv" --units g --component y --fmin 0.5 --fmax 20 --points 100 -o s.csv \
+    --plot s.png -q || fail "smoothed spectrum"
+  head -1 s.csv | grep -q '^f,amplitude$' || fail "CSV header $(head -1 s.csv)"
+  [ "$(wc -l < s.csv)" -eq 101 ] || fail "expected 100 rows"
+  near "$(last_col s.csv f)" 20 1e-9 "last frequency"
+  [ -s s.png ] || fail "no figure"
+  # Response spectra of the AT2 record. T = 0: the PGA, 0.1 g = 0.981 m/s^2. T = 0.01 s: a stiff oscillator
+  # follows the ground, PSA = PGA (steady-state gain 1 + (0.01/1)^2). Undamped at the record's own period
+  # T = 1 s: u = -a0/(2 w^2) (sin wt - wt cos wt), which after 4 whole cycles (wt = 8 pi) has grown to
+  # SD = 8 pi a0 / (2 w^2) = a0 / pi = 0.31226 m; the record's linear interpolation of the sine
+  # (100 samples a cycle) lowers that by (pi/100)^2/3 = 0.03 %.
+  "$DDA" spectra "$DATA/rec_small.at2" --response --periods 0,0.01,1 --damping 0 --at 1 -o r.csv --json > r.json \
+    || fail "response spectrum"
+  head -1 r.csv | grep -q '^T,SD,SV,PSV,PSA,SA$' || fail "CSV header $(head -1 r.csv)"
+  near "$(json_get r.json "d['pga']")" 0.981 1e-9 "PGA"
+  near "$(json_get r.json "d['at'][0]['sd']")" "$(/usr/bin/python3 -c "import math; print(0.981 / math.pi)")" 3e-4 \
+    "SD(1 s)"
+  near "$(row_col r.csv 0 PSA)" 0.981 1e-9 "PSA(0)"
+  near "$(row_col r.csv 1 PSA)" 0.981 0.002 "PSA(0.01 s)"
+  "$DDA" spectra "$DATA/rec_small.at2" --response --plot r.png -q || fail "response figure"
+  [ -s r.png ] || fail "no response figure"
+}
+
+# A CSV table on uneven times: b = 3 a, so the spectral ratio b / a is 3 at every frequency (the smoothing is
+# linear); h1 = 3 v and h2 = 4 v give H/V = sqrt((9 + 16) / 2) = 3.5355 (quadratic mean of two horizontals).
+case_spectra_table() {
+  /usr/bin/python3 - <<'PY'
+import math, random
+random.seed(4)
+t = 0.0
+with open("table.csv", "w") as f:
+    f.write("t,a,b,h1,h2,v\n")
+    for i in range(3000):
+        v = random.gauss(0, 1)
+        f.write(f"{t:.6f},{v!r},{3 * v!r},{3 * v!r},{4 * v!r},{v!r}\n")
+        t += 0.004 if i % 3 else 0.006  # uneven steps (median 0.004 s)
+PY
+  "$DDA" spectra table.csv --column b --reference a --json -o ratio.csv > ratio.json || fail "spectral ratio"
+  [ "$(json_get ratio.json "d['resampled']")" = True ] || fail "uneven times were not resampled"
+  near "$(json_get ratio.json "d['dt']")" 0.004 1e-12 "median step"
+  near "$(json_get ratio.json "d['peak_value']")" 3 1e-9 "ratio"
+  head -1 ratio.csv | grep -q '^f,amplitude,reference,ratio$' || fail "CSV header $(head -1 ratio.csv)"
+  /usr/bin/python3 -c "
+import csv, sys
+r = [float(x['ratio']) for x in csv.DictReader(open('ratio.csv'))]
+sys.exit(0 if len(r) == 500 and max(abs(v - 3) for v in r) < 1e-9 else 1)" || fail "the ratio is not 3 everywhere"
+  "$DDA" spectra table.csv --hv --horizontal h1,h2 --vertical v --json -o hv.csv > hv.json || fail "H/V"
+  near "$(json_get hv.json "d['peak_value']")" 3.5355339 1e-6 "H/V of two horizontals"
+  head -1 hv.csv | grep -q '^f,horizontal,vertical,hv$' || fail "CSV header $(head -1 hv.csv)"
+  "$DDA" spectra table.csv --hv --horizontal h1 --vertical v --json > hv1.json || fail "H/V, one horizontal"
+  near "$(json_get hv1.json "d['peak_value']")" 3 1e-9 "H/V of one horizontal"
+  expect_usage_error "$DDA" spectra table.csv --column a --hv --response
+  expect_usage_error "$DDA" spectra table.csv --column a --reference b --hv
+}
+
+# A results file from `dda run` on the incline of tests/tools/cli_cases.sh (a block sliding from rest down a
+# 30-degree plane, friction 20 degrees, 1 s at dt 1 ms with cut steps, so uneven times): its acceleration is a
+# step of a = g (sin 30 - cos 30 tan 20) = 1.8128 m/s^2 down the plane at t = 0.
+case_spectra_results() {
+  source <(sed -n '/^write_incline() {/,/^}/p' "$SRC/tests/tools/cli_cases.sh")
+  write_incline
+  "$DDA" run incline.yaml -o out -q --no-vtk || fail "dda run"
+  # Response spectrum of the x acceleration (central differences of the stored velocity), a step of
+  # a_x = a cos 30 = 1.5699 m/s^2: a damped oscillator overshoots to SD = (a_x / w^2) (1 + exp(-zeta pi /
+  # sqrt(1 - zeta^2))), so PSA = 1.8545 a_x = 2.9114 m/s^2 for every T whose first peak (t = T/2) lies
+  # inside the 1 s run. Within 1 %.
+  "$DDA" spectra out/results.h5 --point slider --response --at 0.1,1 --json > r.json || fail "response spectra"
+  local psa
+  psa=$(/usr/bin/python3 -c "
+import math
+a = 9.81 * (math.sin(math.radians(30)) - math.cos(math.radians(30)) * math.tan(math.radians(20)))
+z = 0.05
+print(a * math.cos(math.radians(30)) * (1 + math.exp(-z * math.pi / math.sqrt(1 - z * z))))")
+  near "$(json_get r.json "d['at'][0]['psa']")" "$psa" "$(/usr/bin/python3 -c "print(0.01 * $psa)")" "PSA(0.1 s)"
+  near "$(json_get r.json "d['at'][1]['psa']")" "$psa" "$(/usr/bin/python3 -c "print(0.01 * $psa)")" "PSA(1 s)"
+  [ "$(json_get r.json "d['resampled']")" = True ] || fail "the run's uneven steps were not resampled"
+  [ "$(json_get r.json "d['signals'][0]")" = slider.ax ] || fail "signal $(json_get r.json "d['signals']")"
+  # The same history through `dda history --csv` gives the same numbers.
+  "$DDA" history out/results.h5 --csv --point slider > h.csv || fail "dda history"
+  "$DDA" spectra h.csv --point slider --response --at 0.1,1 --json > rh.json || fail "response spectra from CSV"
+  near "$(json_get rh.json "d['at'][0]['psa']")" "$(json_get r.json "d['at'][0]['psa']")" 1e-12 "CSV vs results.h5"
+  # H/V of a point sliding along a line dipping 30 degrees: |X_x| / |X_y| = cot 30 = 1.7321 at every
+  # frequency; up to 50 Hz within 0.1 % (above 100 Hz the contact's own vibration shows).
+  "$DDA" spectra out/results.h5 --point slider --hv --fmax 50 -o hv.csv --plot hv.png -q || fail "H/V"
+  [ -s hv.png ] || fail "no H/V figure"
+  /usr/bin/python3 -c "
+import csv, math, sys
+r = [float(x['hv']) for x in csv.DictReader(open('hv.csv'))]
+sys.exit(0 if max(abs(v / math.sqrt(3) - 1) for v in r) < 1e-3 else 1)" || fail "H/V is not cot 30 degrees"
+  "$DDA" spectra out/results.h5 --point slider --reference slab --quantity displacement -o ssr.csv -q \
+    || fail "spectral ratio"
+  head -1 ssr.csv | grep -q '^f,amplitude,reference,ratio$' || fail "CSV header $(head -1 ssr.csv)"
+  expect_error 1 "out/results.h5: has no measurement point 'nope' \(its points are slider, slab\)" -- \
+    "$DDA" spectra out/results.h5 --point nope
+  expect_error 1 "out/results.h5: slider.vx has 3 samples at the step 0.5 s; a spectrum needs at least 8" -- \
+    "$DDA" spectra out/results.h5 --point slider --dt 0.5
+  expect_error 1 "--response: response spectra are of an acceleration" -- \
+    "$DDA" spectra out/results.h5 --point slider --response --quantity velocity
+  expect_error 1 "--component: 'z' is not x or y" -- "$DDA" spectra out/results.h5 --point slider --component z
+}
+
+case_spectra_errors() {
+  expect_error 1 "rec_nonmonotonic.csv, line 4: the first column \(time\) does not increase" -- \
+    "$DDA" spectra "$DATA/rec_nonmonotonic.csv" --column ax
+  expect_error 1 "rec_nonmonotonic.csv, line 4: .*times must increase" -- \
+    "$DDA" spectra "$DATA/rec_nonmonotonic.csv" --units g --response
+  expect_error 1 "rec_nan.csv, line 3, column 2: 'NaN' is not a finite number" -- \
+    "$DDA" spectra "$DATA/rec_nan.csv" --column ax
+  expect_error 1 "--fmin \(5 Hz\) must be below --fmax \(2 Hz\)" -- \
+    "$DDA" spectra "$DATA/rec_small.at2" --fmin 5 --fmax 2
+  expect_error 1 "No frequency of the spectrum .* lies between --fmin 80" -- \
+    "$DDA" spectra "$DATA/rec_small.at2" --fmin 80
+  expect_error 1 "--damping: the damping ratio 1 is outside \[0, 1\)" -- \
+    "$DDA" spectra "$DATA/rec_small.at2" --response --damping 1
+  expect_error 1 "--damping: the damping ratio -0.1 is outside" -- \
+    "$DDA" spectra "$DATA/rec_small.at2" --response --damping -0.1
+  expect_error 1 "--periods: '1:0.1:5' needs 0 < FIRST < LAST" -- \
+    "$DDA" spectra "$DATA/rec_small.at2" --response --periods 1:0.1:5
+  expect_error 1 "--taper: 'cos' is not none, hann, tukey" -- "$DDA" spectra "$DATA/rec_small.at2" --taper cos
+  expect_error 1 "rec_small.at2: has no vertical \(z\) component" -- "$DDA" spectra "$DATA/rec_small.at2" --hv
+  expect_error 1 "--reference: a record has one series per axis" -- \
+    "$DDA" spectra "$DATA/rec_small.at2" --reference x
+  expect_error 1 "rec_sine2hz.csv: give the series to analyse with --column" -- \
+    "$DDA" spectra "$DATA/rec_sine2hz.csv"
+  expect_error 1 "rec_sine2hz.csv: has no column 'q'" -- "$DDA" spectra "$DATA/rec_sine2hz.csv" --column q
+  expect_error 1 "nothere.csv: file not found" -- "$DDA" spectra nothere.csv --column a
+  expect_usage_error "$DDA" spectra "$DATA/rec_small.at2" --response --hv
+  expect_usage_error "$DDA" spectra "$DATA/rec_small.at2" --no-such-flag
+  expect_usage_error "$DDA" spectra
 }
 
 declare -F "case_$CASE" > /dev/null || fail "no such case"

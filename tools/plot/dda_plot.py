@@ -2,7 +2,7 @@
 """Pictures of dda lines and blocks files (HDF5, see docs/formats.md).
 
     dda_plot.py FILE.h5 [FILE2.h5 ...] -o OUT.png|OUT.svg|OUT.pdf
-                [--kind auto|lines|blocks|histograms|compare] [--labels A B ...]
+                [--kind auto|lines|blocks|histograms|compare|spectra] [--labels A B ...]
                 [--title T] [--bins N] [--fraction] [--no-names]
 
 --kind auto (default) draws each file as what it is: a lines file as its
@@ -20,6 +20,13 @@ the bedding direction (cos d, sin d), d = bedding_dip_deg, exactly as
 --kind compare draws the CSV `dda compare -o` writes: the DDA and the
 reference displacement histories, and below them the relative error in %
 (the seed report's Figure 13); --labels gives the two curve labels.
+
+--kind spectra draws the CSV `dda spectra -o` writes, by its first column:
+f (Hz) -- the amplitude spectrum on log-log axes, or with a ratio (columns
+ratio or hv) the two spectra above and the ratio below, its peak marked;
+T (s) -- the response spectra PSA and SA above and SD below against the
+period, log period axis. --labels names the spectra (the signal, the
+reference).
 
 Needs numpy, h5py and matplotlib (Debian: python3-h5py, python3-matplotlib);
 runs headless (Agg). Any problem is one line on stderr and exit status 2.
@@ -341,6 +348,79 @@ def plot_compare(path, labels):
     return fig
 
 
+# ------------------------------------------------------------------ spectra
+
+
+def read_csv_columns(path, what):
+    import csv
+
+    try:
+        with open(path, newline="") as f:
+            rows = list(csv.DictReader(f))
+        if not rows:
+            fail(f"{path}: has no rows to draw")
+        return {k: np.array([float(r[k]) for r in rows]) for k in rows[0]}
+    except (OSError, KeyError, ValueError, TypeError) as exc:
+        fail(f"{path}: cannot read it as a {what} CSV: {exc}")
+
+
+def plot_spectra(path, labels):
+    """`dda spectra` output: f, amplitude[, reference, ratio] or f, horizontal,
+    vertical, hv (log-log, the ratio in its own panel), or T, SD, SV, PSV,
+    PSA, SA (response spectra against the period)."""
+    c = read_csv_columns(path, "dda spectra")
+    if "T" in c:
+        t = c["T"]
+        pos = t > 0  # T = 0 (the PGA) has no place on a log axis
+        fig, (top, bottom) = plt.subplots(2, 1, sharex=True, figsize=(7.5, 6.5),
+                                          gridspec_kw={"height_ratios": [2, 1]})
+        name = labels[0] if labels else "record"
+        top.plot(t[pos], c["PSA"][pos], color="#d62728", lw=1.4, label=f"PSA, {name}")
+        top.plot(t[pos], c["SA"][pos], color="black", lw=1.0, ls="--", label="SA (absolute)")
+        top.set_ylabel("spectral acceleration")
+        bottom.plot(t[pos], c["SD"][pos], color="#1f77b4", lw=1.2)
+        bottom.set_ylabel("SD")
+        bottom.set_xlabel("period T (s)")
+        bottom.set_xscale("log")
+        for ax in (top, bottom):
+            ax.grid(True, which="both", alpha=0.3)
+        top.legend(loc="best")
+        fig.tight_layout()
+        return fig
+    if "f" not in c:
+        fail(f"{path}: is not a dda spectra CSV (its first column is neither f nor T)")
+    f = c["f"]
+    ratio_key = "ratio" if "ratio" in c else ("hv" if "hv" in c else None)
+    curves = [k for k in ("amplitude", "reference", "horizontal", "vertical") if k in c]
+    names = list(labels or []) + curves[len(labels or []):]
+    if ratio_key is None:
+        fig, top = plt.subplots(figsize=(7.5, 4.5))
+    else:
+        fig, (top, bottom) = plt.subplots(2, 1, sharex=True, figsize=(7.5, 6.5),
+                                          gridspec_kw={"height_ratios": [1, 1]})
+    for k, name, colour in zip(curves, names, ["#d62728", "black"]):
+        top.loglog(f, c[k], color=colour, lw=1.2, label=name)
+    top.set_ylabel("Fourier amplitude")
+    top.grid(True, which="both", alpha=0.3)
+    top.legend(loc="best")
+    last = top
+    if ratio_key is not None:
+        r = c[ratio_key]
+        bottom.loglog(f, r, color="#1f77b4", lw=1.4)
+        bottom.axhline(1.0, color="black", lw=0.6)
+        ok = np.isfinite(r)
+        if ok.any():
+            i = int(np.nanargmax(np.where(ok, r, np.nan)))
+            bottom.plot([f[i]], [r[i]], "o", color="#d62728")
+            bottom.set_title(f"peak {r[i]:.3g} at {f[i]:.3g} Hz", fontsize=9, loc="right")
+        bottom.set_ylabel("H/V" if ratio_key == "hv" else "spectral ratio")
+        bottom.grid(True, which="both", alpha=0.3)
+        last = bottom
+    last.set_xlabel("frequency (Hz)")
+    fig.tight_layout()
+    return fig
+
+
 # -------------------------------------------------------------------- main
 
 
@@ -367,9 +447,10 @@ def main(argv=None):
     p = Parser(prog=PROG, description="Draw dda lines/blocks files or block-size histograms.",
                formatter_class=argparse.RawDescriptionHelpFormatter, epilog=__doc__)
     p.add_argument("files", nargs="+", metavar="FILE.h5",
-                   help="dda-lines or dda-blocks files (--kind compare: one dda compare CSV)")
+                   help="dda-lines or dda-blocks files (--kind compare/spectra: one dda compare/spectra CSV)")
     p.add_argument("-o", "--output", required=True, metavar="OUT", help="OUT.png, OUT.svg or OUT.pdf")
-    p.add_argument("--kind", choices=["auto", "lines", "blocks", "histograms", "compare"], default="auto")
+    p.add_argument("--kind", choices=["auto", "lines", "blocks", "histograms", "compare", "spectra"],
+                   default="auto")
     p.add_argument("--labels", nargs="+", metavar="LABEL", help="one label per file")
     p.add_argument("--title", help="figure title")
     p.add_argument("--bins", type=int, default=30, help="histogram bins (default 30)")
@@ -388,6 +469,14 @@ def main(argv=None):
         if len(a.files) != 1:
             fail(f"--kind compare draws one dda compare CSV, got {len(a.files)} files")
         fig = plot_compare(a.files[0], (a.labels or []) + ["DDA", "reference"][len(a.labels or []):])
+        if a.title:
+            fig.suptitle(a.title)
+        save_atomically(fig, a.output)
+        return 0
+    if a.kind == "spectra":  # one CSV; --labels names the spectra
+        if len(a.files) != 1:
+            fail(f"--kind spectra draws one dda spectra CSV, got {len(a.files)} files")
+        fig = plot_spectra(a.files[0], a.labels or [])
         if a.title:
             fig.suptitle(a.title)
         save_atomically(fig, a.output)

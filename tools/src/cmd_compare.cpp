@@ -7,10 +7,8 @@
 // tools/analysis (compare.hpp).
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <sstream>
-#include <unistd.h>
 
 #include "analysis_options.hpp"
 #include "commands.hpp"
@@ -21,6 +19,7 @@
 #include "dda/df/results.hpp"
 #include "pipeline.hpp"
 #include "plot_runner.hpp"
+#include "results_points.hpp"
 
 namespace dda::cli {
 namespace {
@@ -39,51 +38,6 @@ constexpr const char* kFooter =
     "max(|u_ref|, floor), floor = --floor or 1 % of max |u_ref|; the final error is (u - u_ref) / |u_ref| at the "
     "last compared time. CSV columns: t (s), dda, reference, difference (m), relative_error (fraction).";
 
-struct Reference {
-  std::vector<std::string> header;
-  analysis::NumericTable table;
-  int column(const std::string& name) const {
-    for (std::size_t k = 0; k < header.size(); ++k)
-      if (header[k] == name) return static_cast<int>(k);
-    return -1;
-  }
-};
-
-std::vector<std::string> split_fields(const std::string& line) {
-  std::vector<std::string> out;
-  std::string field;
-  for (const char ch : line) {
-    if (ch == ',' || ch == ';' || ch == ' ' || ch == '\t' || ch == '\r') {
-      if (!field.empty()) out.push_back(field);
-      field.clear();
-    } else {
-      field += ch;
-    }
-  }
-  if (!field.empty()) out.push_back(field);
-  return out;
-}
-
-Reference read_reference(const std::string& path) {
-  std::ifstream f(path);
-  if (!f) throw InputError(path + ": cannot open the reference CSV (file not found or unreadable).");
-  Reference r;
-  std::string line;
-  while (std::getline(f, line)) {
-    const auto fields = split_fields(line);
-    if (fields.empty() || fields[0][0] == '#') continue;
-    r.header = fields;
-    break;
-  }
-  double probe = 0;
-  if (r.header.empty() || std::istringstream(r.header[0]) >> probe)
-    throw InputError(path + ": the reference CSV needs a header line naming its columns (t, s or t, ux, uy, uz).");
-  if (r.header[0] != "t") throw InputError(path + ", line 1: the first column must be t (time in s), got '" +
-                                           r.header[0] + "'.");
-  r.table = analysis::read_numeric_table(path, {r.header.size()});
-  return r;
-}
-
 std::string csv_text(const analysis::SeriesComparison& c) {
   std::string out = "t,dda,reference,difference,relative_error\n";
   for (std::size_t i = 0; i < c.t.size(); ++i) {
@@ -95,15 +49,6 @@ std::string csv_text(const analysis::SeriesComparison& c) {
     out += '\n';
   }
   return out;
-}
-
-std::size_t point_index(const df::Results& r, const std::string& name, const std::string& path) {
-  for (std::size_t k = 0; k < r.point_names.size(); ++k)
-    if (r.point_names[k] == name) return k;
-  std::string known;
-  for (const std::string& n : r.point_names) known += (known.empty() ? "" : ", ") + n;
-  throw InputError(path + ": has no measurement point '" + name + "' (its points are " +
-                   (known.empty() ? "none" : known) + ").");
 }
 
 }  // namespace
@@ -158,18 +103,18 @@ void add_compare_command(CLI::App& app, const GlobalOptions& global) {
     if (opt->floor < 0) throw InputError("--floor: must not be negative.");
 
     const df::Results r = df::read_results_h5(opt->results, false);
-    const std::size_t p = point_index(r, opt->point, opt->results);
+    const std::size_t p = measurement_point_index(r, opt->point, opt->results);
     std::vector<double> mt, mu;
     for (std::size_t s = 0; s < r.histories[p].size(); ++s) {
       Vec2 u = r.histories[p][s].displacement;
       if (!opt->relative_to.empty())
-        u -= r.histories[point_index(r, opt->relative_to, opt->results)][s].displacement;
+        u -= r.histories[measurement_point_index(r, opt->relative_to, opt->results)][s].displacement;
       mt.push_back(r.histories[p][s].time);
       mu.push_back(u.dot(e));
     }
 
     // The reference component.
-    const Reference ref = read_reference(opt->reference);
+    const analysis::NamedTable ref = analysis::read_named_table(opt->reference, "t, s or t, ux, uy, uz");
     std::vector<double> rt, ru;
     const std::string col = opt->column.empty() ? "s" : opt->column;
     const int c = ref.column(col);
@@ -197,24 +142,10 @@ void add_compare_command(CLI::App& app, const GlobalOptions& global) {
     const std::string csv = csv_text(cmp);
     if (!opt->output.empty()) write_text_atomically(opt->output, csv);
     if (!opt->plot.empty()) {
-      // The plot script reads the error CSV: the one written, or a temporary copy.
-      std::string data = opt->output;
-      const bool temporary = data.empty();
-      if (temporary) {
-        data = (std::filesystem::temp_directory_path() / ("dda-compare-" + std::to_string(::getpid()) + ".csv"))
-                   .string();
-        write_text_atomically(data, csv);
-      }
       const std::string label =
           opt->label.empty() ? std::filesystem::path(opt->reference).filename().string() : opt->label;
       const std::string dda_label = "DDA, " + opt->point + (opt->relative_to.empty() ? "" : " - " + opt->relative_to);
-      try {
-        run_plot_script({data, "-o", opt->plot, "--kind", "compare", "--labels", dda_label, label});
-      } catch (...) {
-        if (temporary) std::filesystem::remove(data);
-        throw;
-      }
-      if (temporary) std::filesystem::remove(data);
+      plot_csv(csv, opt->output, {"-o", opt->plot, "--kind", "compare", "--labels", dda_label, label});
     }
 
     nlohmann::json j;

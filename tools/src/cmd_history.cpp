@@ -12,6 +12,7 @@
 #include "dda/common/atomic_file.hpp"
 #include "dda/common/error.hpp"
 #include "dda/df/results.hpp"
+#include "results_points.hpp"
 
 namespace dda::cli {
 
@@ -118,17 +119,7 @@ void add_history_command(CLI::App& app, const GlobalOptions&) {
   cmd->callback([opt] {
     const df::Results r = df::read_results_h5(opt->input, false);
     std::vector<std::size_t> which;
-    for (const std::string& name : opt->points) {
-      std::size_t k = 0;
-      while (k < r.point_names.size() && r.point_names[k] != name) ++k;
-      if (k == r.point_names.size()) {
-        std::string known;
-        for (const std::string& n : r.point_names) known += (known.empty() ? "" : ", ") + n;
-        throw InputError(opt->input + ": has no measurement point '" + name + "' (its points are " +
-                         (known.empty() ? "none" : known) + ").");
-      }
-      which.push_back(k);
-    }
+    for (const std::string& name : opt->points) which.push_back(measurement_point_index(r, name, opt->input));
     if (opt->points.empty())
       for (std::size_t k = 0; k < r.point_names.size(); ++k) which.push_back(k);
     std::string text;

@@ -29,6 +29,7 @@ void add_wedge_command(CLI::App& app, const GlobalOptions& global);
 void add_backfit_command(CLI::App& app, const GlobalOptions& global);
 void add_record_command(CLI::App& app, const GlobalOptions& global);
 void add_compare_command(CLI::App& app, const GlobalOptions& global);  // DDA history vs analytical
+void add_spectra_command(CLI::App& app, const GlobalOptions& global);  // Fourier, H/V, spectral ratios, response
 
 // The scenario's `output` section (parsed in cmd_run.cpp; docs/scenario.md).
 struct OutputOptions {

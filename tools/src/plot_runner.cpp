@@ -9,6 +9,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "dda/common/atomic_file.hpp"
 #include "dda/common/error.hpp"
 
 extern char** environ;
@@ -90,6 +91,22 @@ void run_plot_script(const std::vector<std::string>& args) {
     while (!msg.empty() && msg.back() == '.') msg.pop_back();
     throw InputError(msg.empty() ? "the plot script failed." : msg + ".");
   }
+}
+
+void plot_csv(const std::string& csv, const std::string& written, const std::vector<std::string>& args) {
+  std::vector<std::string> argv{written};
+  if (written.empty())
+    argv[0] = (fs::temp_directory_path() / ("dda-plot-" + std::to_string(::getpid()) + ".csv")).string();
+  argv.insert(argv.end(), args.begin(), args.end());
+  if (!written.empty()) return run_plot_script(argv);
+  write_text_atomically(argv[0], csv);
+  try {
+    run_plot_script(argv);
+  } catch (...) {
+    fs::remove(argv[0]);
+    throw;
+  }
+  fs::remove(argv[0]);
 }
 
 bool plotting_available() {

@@ -12,6 +12,12 @@ namespace dda::cli {
 // message if it fails.
 void run_plot_script(const std::vector<std::string>& args);
 
+// Runs the plot script on a CSV the command produced (`csv`): on `written`
+// when the command has written it there (-o), otherwise on a temporary copy
+// removed afterwards. `args` follow the CSV's path on the script's command
+// line (-o FIG, --kind ...).
+void plot_csv(const std::string& csv, const std::string& written, const std::vector<std::string>& args);
+
 // True when python3 with matplotlib and h5py can be found (used by `dda run`
 // to skip figures with a note instead of failing).
 bool plotting_available();

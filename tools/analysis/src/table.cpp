@@ -96,4 +96,35 @@ NumericTable read_numeric_table(const std::string& path, const std::vector<std::
   return table;
 }
 
+int NamedTable::column(const std::string& name) const {
+  for (std::size_t k = 0; k < header.size(); ++k)
+    if (header[k] == name) return static_cast<int>(k);
+  return -1;
+}
+
+NamedTable read_named_table(const std::string& path, const std::string& expected) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw InputError(path + ": file not found.");
+  std::ifstream f(path);
+  if (!f) throw InputError(path + ": cannot open the file for reading.");
+  NamedTable t;
+  std::string line;
+  std::size_t line_no = 0;
+  while (std::getline(f, line)) {
+    ++line_no;
+    const std::string tl = trim(line);
+    if (tl.empty() || tl[0] == '#') continue;
+    t.header = fields_of(tl);
+    break;
+  }
+  double probe = 0;
+  if (t.header.empty() || number(t.header[0], probe))
+    throw InputError(path + ": needs a header line naming its columns (" + expected + ").");
+  if (t.header[0] != "t")
+    throw InputError(path + ", line " + std::to_string(line_no) + ": the first column must be t (time in s), got '" +
+                     t.header[0] + "'.");
+  t.table = read_numeric_table(path, {t.header.size()});
+  return t;
+}
+
 }  // namespace dda::analysis

@@ -17,4 +17,17 @@ struct NumericTable {
 NumericTable read_numeric_table(const std::string& path, const std::vector<std::size_t>& allowed_columns,
                                 bool allow_repeats = false);
 
+// A table whose first line names its columns, time `t` (s) first (an
+// analytical solution for `dda compare`, a `dda history --csv` file, any
+// series for `dda spectra`); the rows as read_numeric_table reads them, as
+// many columns as names, time strictly increasing. InputError naming the
+// file without a header line (`expected` describes the columns wanted, for
+// the message) or with another first column than t.
+struct NamedTable {
+  std::vector<std::string> header;
+  NumericTable table;
+  int column(const std::string& name) const;  // index, -1 if absent
+};
+NamedTable read_named_table(const std::string& path, const std::string& expected);
+
 }  // namespace dda::analysis

@@ -1,0 +1,13 @@
+#pragma once
+// Measurement points of a results file by name (dda history, compare, spectra).
+#include <string>
+
+#include "dda/df/results.hpp"
+
+namespace dda::cli {
+
+// Index of the point `name` in `r.point_names`; InputError naming `path` and
+// listing the points the file has otherwise.
+std::size_t measurement_point_index(const df::Results& r, const std::string& name, const std::string& path);
+
+}  // namespace dda::cli
