@@ -133,7 +133,7 @@ void write_series(h5::Writer& w, const Simulation& sim) {
     for (const StepRecord& s : sim.log()) time.push_back(s.time);
   }
   const std::size_t ns = time.size();
-  std::vector<double> pos, disp, vel, stress;
+  std::vector<double> pos, disp, vel, acc, stress;
   pos.reserve(ns * np * 2);
   for (std::size_t s = 0; s < ns; ++s)
     for (std::size_t p = 0; p < np; ++p) {
@@ -141,12 +141,15 @@ void write_series(h5::Writer& w, const Simulation& sim) {
       pos.insert(pos.end(), {m.position.x(), m.position.y()});
       disp.insert(disp.end(), {m.displacement.x(), m.displacement.y()});
       vel.insert(vel.end(), {m.velocity.x(), m.velocity.y()});
+      acc.insert(acc.end(), {m.acceleration.x(), m.acceleration.y()});
       stress.insert(stress.end(), {m.stress[0], m.stress[1], m.stress[2]});
     }
   w.f64(g.get(), "time", time, {ns}, "s", "time of each sample");
   w.f64(g.get(), "position", pos, {ns, np, 2}, "m", "x y of each point");
   w.f64(g.get(), "displacement", disp, {ns, np, 2}, "m", "ux uy from the start of the run");
   w.f64(g.get(), "velocity", vel, {ns, np, 2}, "m/s", "vx vy at the end of the step");
+  w.f64(g.get(), "acceleration", acc, {ns, np, 2}, "m/s^2",
+        "ax ay during the step that ended at the sample (constant within a DDA step; 0 at the start)");
   w.f64(g.get(), "stress", stress, {ns, np, 3}, "Pa", "sxx syy sxy of the block the point lies in");
 }
 
@@ -385,6 +388,9 @@ void read_series(const h5::Reader& r, Results& out) {
   const auto pos = f64(r, "/series/position", {ns, np, 2});
   const auto disp = f64(r, "/series/displacement", {ns, np, 2});
   const auto vel = f64(r, "/series/velocity", {ns, np, 2});
+  // Files written before receivers had accelerations have none.
+  out.has_acceleration = r.exists("/series/acceleration");
+  const auto acc = out.has_acceleration ? f64(r, "/series/acceleration", {ns, np, 2}) : std::vector<double>(2 * ns * np);
   const auto stress = f64(r, "/series/stress", {ns, np, 3});
   out.histories.assign(np, std::vector<MeasurementSample>(ns));
   for (std::size_t s = 0; s < ns; ++s)
@@ -395,6 +401,7 @@ void read_series(const h5::Reader& r, Results& out) {
       m.position = Vec2(pos[2 * k], pos[2 * k + 1]);
       m.displacement = Vec2(disp[2 * k], disp[2 * k + 1]);
       m.velocity = Vec2(vel[2 * k], vel[2 * k + 1]);
+      m.acceleration = Vec2(acc[2 * k], acc[2 * k + 1]);
       m.stress = Vector3d(stress[3 * k], stress[3 * k + 1], stress[3 * k + 2]);
     }
 }

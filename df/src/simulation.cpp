@@ -278,6 +278,7 @@ void Simulation::accept(double dt, const Eigen::VectorXd& d, std::vector<Contact
     const Vector6d di = d.segment<kDofs>(kDofs * i);
     const int mat = model_.block_material[i];
     const Vector6d v1 = 2.0 / dt * di - b.velocity;  // end velocity, constant acceleration
+    b.acceleration = (v1 - b.velocity) / dt;
     kinetic += 0.5 * v1.dot(mass_matrix(b.geometry, model_.materials[mat].density) * v1);
     for (Vec2& v : b.vertices) v = move_point(b.geometry.centroid, di, v);
     b.geometry = block_geometry(b.vertices);
@@ -320,6 +321,7 @@ void Simulation::record_measurements() {
     m.position = measurement_pos_[k];
     m.displacement = measurement_pos_[k] - model_.measurements[k].position;
     m.velocity = t_matrix(s.geometry.centroid, m.position) * s.velocity_end;
+    m.acceleration = t_matrix(s.geometry.centroid, m.position) * s.acceleration;
     m.stress = s.stress;
     histories_[k].push_back(m);
   }

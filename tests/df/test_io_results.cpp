@@ -74,6 +74,8 @@ TEST(IoResults, WritesAndReadsBack) {
   ASSERT_EQ(back.log.size(), sim.log().size());
   ASSERT_EQ(back.histories[0].size(), sim.log().size() + 1);
   EXPECT_EQ(back.histories[0].back().displacement, sim.histories()[0].back().displacement);
+  EXPECT_TRUE(back.has_acceleration);
+  EXPECT_EQ(back.histories[0].back().acceleration, sim.histories()[0].back().acceleration);
   EXPECT_EQ(back.energy.size(), sim.energy_log().size());
   ASSERT_EQ(back.frames.size(), 4u);
   EXPECT_NEAR(back.frames[1].time, 0.1, 1e-9);

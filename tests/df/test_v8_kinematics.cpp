@@ -31,6 +31,9 @@ TEST(V8, FreeFallIsExact) {
   EXPECT_NEAR(s.displacement.x(), 0.0, 1e-12);
   EXPECT_LE(std::abs(s.velocity.y() + g) / g, 1e-9);
   EXPECT_GT(sim.log().size(), 100u);  // dt was cut by the displacement limit
+  // The receiver's acceleration is g in every step, whatever its length.
+  for (std::size_t k = 1; k < sim.histories()[0].size(); ++k)
+    EXPECT_LE((sim.histories()[0][k].acceleration - Vec2(0, -g)).norm() / g, 1e-9) << "sample " << k;
 }
 
 TEST(V8, FreeSpinKeepsAreaAndAngle) {
@@ -80,6 +83,7 @@ TEST(V8, PushedBlockMovesFt2Over2m) {
   EXPECT_LE(std::abs(s.displacement.x() - 1.0), 1e-9);
   EXPECT_NEAR(s.displacement.y(), 0.0, 1e-12);
   EXPECT_LE(std::abs(s.velocity.x() - 2.0), 1e-9);  // v = F t / m
+  EXPECT_LE(std::abs(s.acceleration.x() - 2.0), 1e-9);  // a = F / m
 }
 
 TEST(V8, ColumnOnFixedBaseCarriesMeanStress) {

@@ -21,7 +21,8 @@ namespace {
 constexpr const char* kColumnsHelp =
     "CSV columns: t (s), then for each point NAME: NAME.x NAME.y (current position, m), NAME.ux NAME.uy "
     "(displacement from the start of the run, m), NAME.vx NAME.vy (velocity, m/s), NAME.sxx NAME.syy NAME.sxy "
-    "(stress of the block the point lies in, Pa, tension positive). With --steps: step, t, dt, iterations, "
+    "(stress of the block the point lies in, Pa, tension positive); with --acceleration also NAME.ax NAME.ay "
+    "after each point's columns (acceleration during the step that ended at the sample, m/s^2). With --steps: step, t, dt, iterations, "
     "dt_cuts, converged, open, sliding, locked, max_displacement, kinetic_energy, elastic_energy.";
 
 void put(std::string& out, double v) {
@@ -30,10 +31,13 @@ void put(std::string& out, double v) {
   out.append(buf, r.ptr);
 }
 
-std::string points_csv(const df::Results& r, const std::vector<std::size_t>& which) {
+std::string points_csv(const df::Results& r, const std::vector<std::size_t>& which, bool acceleration) {
   std::string out = "t";
-  for (std::size_t p : which)
+  for (std::size_t p : which) {
     for (const char* c : {"x", "y", "ux", "uy", "vx", "vy", "sxx", "syy", "sxy"}) out += "," + r.point_names[p] + "." + c;
+    if (acceleration)
+      for (const char* c : {"ax", "ay"}) out += "," + r.point_names[p] + "." + c;
+  }
   out += "\n";
   if (r.histories.empty()) {  // no measurement points: just the times
     put(out, r.log.empty() ? 0.0 : r.log.front().time - r.log.front().dt);
@@ -54,6 +58,11 @@ std::string points_csv(const df::Results& r, const std::vector<std::size_t>& whi
         out += ',';
         put(out, v);
       }
+      if (acceleration)
+        for (double v : {m.acceleration.x(), m.acceleration.y()}) {
+          out += ',';
+          put(out, v);
+        }
     }
     out += "\n";
   }
@@ -106,7 +115,7 @@ void add_history_command(CLI::App& app, const GlobalOptions&) {
   struct Options {
     std::string input, output;
     std::vector<std::string> points;
-    bool csv = false, steps = false;
+    bool csv = false, steps = false, acceleration = false;
   };
   auto opt = std::make_shared<Options>();
   CLI::App* cmd = app.add_subcommand("history", "Time series of the measurement points of a results file");
@@ -114,10 +123,14 @@ void add_history_command(CLI::App& app, const GlobalOptions&) {
   cmd->add_option("results", opt->input, "Results file written by `dda df` or `dda run`")->required();
   cmd->add_flag("--csv", opt->csv, "Print the series as CSV (one row per sample; see the columns below)");
   cmd->add_option("--point", opt->points, "Only these measurement points (repeat or list several)");
+  cmd->add_flag("--acceleration", opt->acceleration,
+                "With --csv: add NAME.ax NAME.ay (the acceleration of each point during each step)");
   cmd->add_flag("--steps", opt->steps, "Print the per-step statistics as CSV instead");
   cmd->add_option("-o,--output", opt->output, "Write to this file instead of the standard output");
   cmd->callback([opt] {
     const df::Results r = df::read_results_h5(opt->input, false);
+    if (opt->acceleration && !r.has_acceleration)
+      throw InputError(opt->input + ": holds no accelerations (it was written by an older dda); run it again.");
     std::vector<std::size_t> which;
     for (const std::string& name : opt->points) which.push_back(measurement_point_index(r, name, opt->input));
     if (opt->points.empty())
@@ -126,7 +139,7 @@ void add_history_command(CLI::App& app, const GlobalOptions&) {
     if (opt->steps)
       text = steps_csv(r);
     else if (opt->csv)
-      text = points_csv(r, which);
+      text = points_csv(r, which, opt->acceleration);
     else
       text = summary(r, opt->input, which);
     if (opt->output.empty())

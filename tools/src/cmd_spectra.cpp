@@ -31,8 +31,10 @@ constexpr const char* kFooter =
     "model axes x horizontal, y up); a CSV with a header line and t first (--column NAME, or --point NAME for the "
     "NAME.ux/uy/vx/vy columns of `dda history --csv`); or an acceleration record, PEER .AT2 or a CSV read as by "
     "`dda record` when --units is given (t, ax, ay[, az] or t, a; --component x|y|z; m/s^2). Results store "
-    "displacement and velocity per step; --quantity acceleration is the central difference of the velocity "
-    "(after resampling; it scales a frequency f by sin(2 pi f dt)/(2 pi f dt)). Uneven times (adaptive steps) "
+    "displacement, velocity and acceleration per step (the acceleration is constant within a DDA step); from a "
+    "file without accelerations (an older results file, a `dda history --csv` without --acceleration) "
+    "--quantity acceleration is the central difference of the velocity (after resampling; it scales a frequency "
+    "f by sin(2 pi f dt)/(2 pi f dt)). Uneven times (adaptive steps) "
     "are resampled by linear interpolation to --dt, by default the median step. "
     "Spectrum: mean removed (--detrend: the least-squares line), --taper (default tukey:0.1, cosine flanks over "
     "10 % of the record), A(f) = dt |sum x_n w_n exp(-2 pi i f n dt)| (--amplitude fourier: units of the signal "
@@ -294,7 +296,7 @@ void add_spectra_command(CLI::App& app, const GlobalOptions& global) {
   cmd->add_option("--column", opt->column, "Column of a CSV table (instead of --point)");
   cmd->add_option("--component", opt->component, "x (horizontal, default) or y (up) of a point; x, y or z of a record");
   cmd->add_option("--quantity", opt->quantity,
-                  "velocity (default), displacement or acceleration (central differences of the velocity) of a point");
+                  "velocity (default), displacement or acceleration of a point");
   cmd->add_option("--units", opt->units, "Read a CSV as an acceleration record in these units: g or m/s2");
   auto* ref = cmd->add_option("--reference", opt->reference,
                               "Spectral ratio against this reference point (or column): S / S_reference");

@@ -69,19 +69,23 @@ RawSignal SignalSource::point(const std::string& name, char component, Quantity 
     throw InputError(std::string("--component: '") + component + "' is not x or y (a point of the 2D model).");
   RawSignal s;
   const char c = component;
-  const bool derive = q == Quantity::acceleration;
-  const char letter = q == Quantity::displacement ? 'u' : 'v';  // acceleration: from the velocity
+  // Acceleration: stored in results files (constant within each DDA step),
+  // else the velocity differentiated.
+  const bool stored_acceleration = results_ && results_->has_acceleration && q == Quantity::acceleration;
+  const bool derive = q == Quantity::acceleration && !stored_acceleration;
+  const char letter = q == Quantity::displacement ? 'u' : stored_acceleration ? 'a' : 'v';
   s.units = q == Quantity::displacement ? "m" : q == Quantity::velocity ? "m/s" : "m/s^2";
-  s.label = name + "." + (derive ? 'a' : letter) + c;
+  s.label = name + "." + (q == Quantity::acceleration ? 'a' : letter) + c;
   s.differentiate = derive;
   if (results_) {
     const std::size_t p = measurement_point_index(*results_, name, path_);
     for (const df::MeasurementSample& m : results_->histories[p]) {
-      const double v = letter == 'u' ? (c == 'x' ? m.displacement.x() : m.displacement.y())
-                                     : (c == 'x' ? m.velocity.x() : m.velocity.y());
+      const Vec2 w = letter == 'u' ? m.displacement : letter == 'a' ? m.acceleration : m.velocity;
+      const double v = c == 'x' ? w.x() : w.y();
       if (!std::isfinite(v))
         throw InputError(path_ + ": point '" + name + "' has a non-finite " +
-                         (letter == 'u' ? "displacement" : "velocity") + " at t = " + num(m.time) + " s.");
+                         (letter == 'u' ? "displacement" : letter == 'a' ? "acceleration" : "velocity") +
+                         " at t = " + num(m.time) + " s.");
       if (!s.t.empty() && !(m.time > s.t.back()))
         throw InputError(path_ + ": the times of point '" + name + "' do not increase at t = " + num(m.time) + " s.");
       s.t.push_back(m.time);

@@ -52,6 +52,7 @@ struct Results {
   std::vector<int> point_blocks;
   std::vector<StepRecord> log;
   std::vector<std::vector<MeasurementSample>> histories;  // per point; sample 0 is the initial state
+  bool has_acceleration = false;        // the file holds /series/acceleration (older files do not)
   std::vector<EnergyRecord> energy;                       // record 0 is the initial state, then one per step
   std::vector<std::string> bolt_names;
   std::vector<std::vector<BoltSample>> bolt_histories;    // per bolt; sample 0 is the initial state

@@ -34,6 +34,9 @@ struct BlockState {
   BlockGeometry geometry;        // of the current vertices
   Vector6d velocity = Vector6d::Zero();      // start velocity of the next step (k * v1)
   Vector6d velocity_end = Vector6d::Zero();  // v1, end velocity of the last step (before k)
+  // Acceleration of the last step, 2 (d - dt v0) / dt^2: constant within a
+  // DDA step. Output only (receivers); a restored run recomputes it.
+  Vector6d acceleration = Vector6d::Zero();
   Vector3d stress = Vector3d::Zero();    // [sx, sy, txy], Pa, tension positive
 };
 
@@ -56,6 +59,7 @@ struct MeasurementSample {
   Vec2 position{0, 0};
   Vec2 displacement{0, 0};       // from the initial position
   Vec2 velocity{0, 0};           // end-of-step velocity of the material point
+  Vec2 acceleration{0, 0};       // of the material point during the step that ended here (0 at the start)
   Vector3d stress = Vector3d::Zero();  // stress of the block it lies in
 };
 
