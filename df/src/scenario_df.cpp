@@ -208,6 +208,7 @@ struct Parsed {
   std::vector<std::string> fixed_sides;
   std::optional<YamlNode> fixed_boundary_node;
   std::vector<std::string> viscous_sides;       // boundaries.viscous
+  std::vector<std::string> free_field_sides;    // boundaries.free_field
   std::optional<YamlNode> viscous_node;
   Control control;
   OutputSchedule output;
@@ -290,10 +291,18 @@ Parsed parse(const YamlNode& root) {
 
   // boundaries
   if (auto b = root.optional_child("boundaries")) {
-    b->allow({"viscous"});
+    b->allow({"viscous", "free_field"});
     if (b->has("viscous")) {
       p.viscous_node = b->child("viscous");
       for (const YamlNode& s : b->list("viscous")) p.viscous_sides.push_back(read_side(s, p.viscous_sides));
+    }
+    for (const YamlNode& s : b->list_or_empty("free_field")) {
+      const std::string side = read_side(s, p.free_field_sides);
+      if (side != "left" && side != "right")
+        s.fail("must be left or right (free-field boundaries stand on the lateral sides), got '" + side + "'");
+      if (std::find(p.viscous_sides.begin(), p.viscous_sides.end(), side) != p.viscous_sides.end())
+        s.fail("is also in boundaries.viscous; a side has plain dashpots or free-field ones, not both");
+      p.free_field_sides.push_back(side);
     }
   }
 
@@ -409,17 +418,31 @@ void add_boundary_fixes(const BlockModel& blocks, const std::vector<std::string>
   }
 }
 
-// Dashpots on every domain-boundary edge of the given sides; the edges of
-// each side by index into in.viscous_boundary->edges.
-ViscousSides add_viscous_boundary(const BlockModel& blocks, const std::vector<std::string>& sides, ModelInput& in) {
+// Dashpots on every domain-boundary edge of the given sides, free-field
+// ones on those of `free_field_sides`; the edges of each side by index into
+// in.viscous_boundary->edges. The base of the incident wave is the bottom
+// of the model, the free surface of the free field the highest point of
+// the free-field sides.
+ViscousSides add_viscous_boundary(const BlockModel& blocks, const std::vector<std::string>& sides,
+                                  const std::vector<std::string>& free_field_sides, ModelInput& in) {
   ViscousSides by_side;
-  if (sides.empty()) return by_side;
+  if (sides.empty() && free_field_sides.empty()) return by_side;
   ViscousBoundary v;
-  for (const std::string& side : sides)
-    for (const auto& [b, k] : side_edges(blocks, side)) {
-      by_side[side].push_back(v.edges.size());
-      v.edges.push_back({b, k, false});
-    }
+  v.base_y = std::numeric_limits<double>::infinity();
+  v.surface_y = -v.base_y;
+  for (const Block& b : blocks.blocks)
+    for (const Vec2& p : b.vertices) v.base_y = std::min(v.base_y, p.y());
+  for (const bool free_field : {false, true})
+    for (const std::string& side : free_field ? free_field_sides : sides)
+      for (const auto& [b, k] : side_edges(blocks, side)) {
+        by_side[side].push_back(v.edges.size());
+        v.edges.push_back({b, k, false, free_field});
+        if (free_field) {
+          const Polygon2& poly = blocks.blocks[b].vertices;
+          v.surface_y = std::max({v.surface_y, poly[k].y(), poly[(k + 1) % poly.size()].y()});
+        }
+      }
+  if (free_field_sides.empty()) v.surface_y = 0;
   in.viscous_boundary = std::move(v);
   return by_side;
 }
@@ -555,7 +578,7 @@ DfScenario read_df_scenario(const YamlNode& root, const BlockModel& blocks, cons
   add_boundary_fixes(blocks, p.fixed_sides, in);
   if (!p.fixed_sides.empty() && in.fixed_points.empty() && p.fixed_boundary_node)
     p.fixed_boundary_node->fail("fixes nothing: no block has a domain-boundary edge on those sides");
-  const ViscousSides viscous = add_viscous_boundary(blocks, p.viscous_sides, in);
+  const ViscousSides viscous = add_viscous_boundary(blocks, p.viscous_sides, p.free_field_sides, in);
   if (p.viscous_node && !in.viscous_boundary->edges.size())
     p.viscous_node->fail("holds nothing: no block has a domain-boundary edge on those sides");
   if (p.earthquake) apply_earthquake(*p.earthquake, p.fixed_sides, viscous, in);  // needs every fixed point

@@ -20,19 +20,37 @@ Vec2 step_body_acceleration(const BodyAcceleration& b, double t, double dt, bool
   return settling ? b.history.at(t) : b.history.average(t, t + dt);
 }
 
-// Mean particle velocity of the incident wave over the step; none while
-// settling into equilibrium (time stands still then).
-Vec2 step_incident_velocity(const ViscousBoundary& v, double t, double dt, bool settling) {
-  if (v.incident_velocity.t.empty() || settling) return Vec2::Zero();
-  return v.incident_velocity.average(t, t + dt);
-}
 
 }  // namespace
 
+namespace {
+Vec2 outward_normal(const Polygon2& v, int edge) {
+  const Vec2 t = v[(edge + 1) % v.size()] - v[edge];
+  return Vec2(t.y(), -t.x()).normalized();
+}
+}  // namespace
+
 Eigen::Matrix2d Simulation::edge_dashpot(const ViscousEdge& e) const {
-  const Polygon2& v = blocks_[e.block].vertices;
-  const Vec2 t = v[(e.edge + 1) % v.size()] - v[e.edge];
-  return dashpot_matrix(model_.materials[model_.block_material[e.block]], Vec2(t.y(), -t.x()).normalized());
+  return dashpot_matrix(model_.materials[model_.block_material[e.block]], outward_normal(blocks_[e.block].vertices, e.edge));
+}
+
+std::function<Vec2(const Vec2&)> Simulation::edge_traction(const ViscousEdge& e, const Eigen::Matrix2d& dashpot,
+                                                           double dt) const {
+  const ViscousBoundary& vb = *model_.viscous_boundary;
+  // No incident wave, or settling into equilibrium (time stands still): the
+  // dashpots alone.
+  if (vb.incident_velocity.t.empty() || settling_ || !(e.input || e.free_field)) return {};
+  const double t0 = time_, t1 = time_ + dt;
+  if (e.input) {
+    const Vec2 traction = 2.0 * dashpot * vb.incident_velocity.average(t0, t1);
+    return [traction](const Vec2&) { return traction; };
+  }
+  const Material& m = model_.materials[model_.block_material[e.block]];
+  const Vec2 n = outward_normal(blocks_[e.block].vertices, e.edge);
+  return [&vb, m, dashpot, n, t0, t1](const Vec2& p) {
+    return free_field_traction(free_field(vb.incident_velocity, m, p.y(), vb.base_y, vb.surface_y, t0, t1), m,
+                               dashpot, n);
+  };
 }
 
 void Simulation::init_physics() {
@@ -77,11 +95,11 @@ void Simulation::assemble_physics(double dt) {
       system_.rhs(i).head<2>() += blocks_[i].geometry.area * model_.materials[model_.block_material[i]].density * b;
   }
   if (const auto& vb = model_.viscous_boundary) {
-    const Vec2 v_in = step_incident_velocity(*vb, time_, dt, settling_);
     for (const ViscousEdge& e : vb->edges) {
       const BlockState& b = blocks_[e.block];
-      add_viscous_edge_terms(e.block, b.vertices, b.geometry.centroid, e.edge, edge_dashpot(e),
-                             e.input ? v_in : Vec2::Zero(), dt, system_);
+      const Eigen::Matrix2d dashpot = edge_dashpot(e);
+      add_viscous_edge_terms(e.block, b.vertices, b.geometry.centroid, e.edge, dashpot,
+                             edge_traction(e, dashpot, dt), dt, system_);
     }
   }
   for (std::size_t k = 0; k < bolts_.size(); ++k) {
@@ -127,11 +145,11 @@ void Simulation::before_accept(double dt, const Eigen::VectorXd& d, const std::v
     e.load_work += 0.5 * p * (gap1.squaredNorm() - gap0.squaredNorm()) + p * gap1.dot(u);
   }
   if (const auto& vb = model_.viscous_boundary) {
-    const Vec2 v_in = step_incident_velocity(*vb, time_, dt, settling_);
     for (const ViscousEdge& ve : vb->edges) {
       const BlockState& b = blocks_[ve.block];
-      const ViscousEdgeEnergy w = viscous_edge_energy(b.vertices, b.geometry.centroid, ve.edge, edge_dashpot(ve),
-                                                      ve.input ? v_in : Vec2::Zero(), di(ve.block), dt);
+      const Eigen::Matrix2d dashpot = edge_dashpot(ve);
+      const ViscousEdgeEnergy w = viscous_edge_energy(b.vertices, b.geometry.centroid, ve.edge, dashpot,
+                                                      edge_traction(ve, dashpot, dt), di(ve.block), dt);
       e.radiation += w.absorbed;
       e.load_work += w.input_work;
     }

@@ -43,27 +43,51 @@ Matrix2d dashpot_matrix(const Material& m, const Vec2& n) {
   return m.density * (p_wave_speed(m) * n * n.transpose() + s_wave_speed(m) * s * s.transpose());
 }
 
+FreeField free_field(const TimeHistory& incident, const Material& m, double y, double y_base, double y_surface,
+                     double t0, double t1) {
+  // Travel times to y of the up-going wave and of its reflection, per
+  // component (x: S, y: P).
+  FreeField ff;
+  const double speed[2] = {s_wave_speed(m), p_wave_speed(m)};
+  for (int k = 0; k < 2; ++k) {
+    const double up = (y - y_base) / speed[k], down = (2 * y_surface - y - y_base) / speed[k];
+    ff.up[k] = incident.average(t0 - up, t1 - up)[k];
+    ff.down[k] = incident.average(t0 - down, t1 - down)[k];
+  }
+  ff.velocity = ff.up + ff.down;
+  return ff;
+}
+
+Vec2 free_field_traction(const FreeField& ff, const Material& m, const Matrix2d& dashpot, const Vec2& n) {
+  const double sxy = m.density * s_wave_speed(m) * (ff.down.x() - ff.up.x());
+  const double syy = m.density * p_wave_speed(m) * (ff.down.y() - ff.up.y());
+  const double sxx = syy * (m.plane == PlaneMode::Strain ? m.poisson / (1 - m.poisson) : m.poisson);
+  const Vec2 stress_n(sxx * n.x() + sxy * n.y(), sxy * n.x() + syy * n.y());
+  return dashpot * ff.velocity + stress_n;
+}
+
 void add_viscous_edge_terms(int i, const Polygon2& v, const Vec2& c, int edge, const Matrix2d& dashpot,
-                            const Vec2& v_in, double dt, BlockSystem& sys) {
+                            const EdgeTraction& traction, double dt, BlockSystem& sys) {
   const Edge e = edge_of(v, edge);
-  const Vec2 traction_in = 2.0 * dashpot * v_in;
   for (const double g : kGaussPoint) {
-    const Matrix26d t = t_matrix(c, e.a + g * (e.b - e.a));
+    const Vec2 p = e.a + g * (e.b - e.a);
+    const Matrix26d t = t_matrix(c, p);
     const double w = 0.5 * e.length;  // weight of each point
     sys.diagonal(i) += (w / dt) * t.transpose() * dashpot * t;
-    sys.rhs(i) += w * t.transpose() * traction_in;
+    if (traction) sys.rhs(i) += w * t.transpose() * traction(p);
   }
 }
 
 ViscousEdgeEnergy viscous_edge_energy(const Polygon2& v, const Vec2& c, int edge, const Matrix2d& dashpot,
-                                      const Vec2& v_in, const Vector6d& di, double dt) {
+                                      const EdgeTraction& traction, const Vector6d& di, double dt) {
   const Edge e = edge_of(v, edge);
   ViscousEdgeEnergy out;
   for (const double g : kGaussPoint) {
-    const Vec2 u = t_matrix(c, e.a + g * (e.b - e.a)) * di;
+    const Vec2 p = e.a + g * (e.b - e.a);
+    const Vec2 u = t_matrix(c, p) * di;
     const double w = 0.5 * e.length;
     out.absorbed += w * u.dot(dashpot * u) / dt;
-    out.input_work += w * (2.0 * dashpot * v_in).dot(u);
+    if (traction) out.input_work += w * traction(p).dot(u);
   }
   return out;
 }

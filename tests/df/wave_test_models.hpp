@@ -17,6 +17,7 @@ struct ColumnSpec {
   int blocks = 40;                   // rows
   int columns = 1;                   // blocks side by side in each row (glued)
   bool viscous_sides = false;        // dashpots on the left and right sides too
+  bool free_field_sides = false;     // free-field boundaries on the left and right sides
   bool viscous_top = false;          // and on the top (the column then has no free surface)
   bool viscous_base = true;          // false: no dashpots and no incident wave at all
   double width = 2.0, height = 2.5;  // m, of each block
@@ -79,8 +80,9 @@ inline ModelInput wave_column(const ColumnSpec& c, const TimeHistory& incident) 
       const int id = column_block(c, k, j);
       if (k == 0 && c.viscous_base) v.edges.push_back({id, 0, true});
       if (c.viscous_top && k == c.blocks - 1) v.edges.push_back({id, 2, false});
-      if (c.viscous_sides && j == 0) v.edges.push_back({id, 3, false});
-      if (c.viscous_sides && j == c.columns - 1) v.edges.push_back({id, 1, false});
+      const bool side = c.viscous_sides || c.free_field_sides;
+      if (side && j == 0) v.edges.push_back({id, 3, false, c.free_field_sides});
+      if (side && j == c.columns - 1) v.edges.push_back({id, 1, false, c.free_field_sides});
       in.geometry.blocks.push_back(b);
     }
   const int mid = c.columns / 2;
@@ -95,6 +97,8 @@ inline ModelInput wave_column(const ColumnSpec& c, const TimeHistory& incident) 
   in.default_joint.normal_penalty = c.penalty > 0 ? c.penalty : 1000 * c.material.young;
   in.gravity = {0, 0};
   v.incident_velocity = incident;
+  v.base_y = 0;
+  v.surface_y = c.blocks * c.height;
   if (!v.edges.empty()) in.viscous_boundary = v;
   return in;
 }

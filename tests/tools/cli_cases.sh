@@ -378,6 +378,12 @@ PY
   sed 's/  viscous: \[bottom\]/  viscous: [left]/' column.yaml > bad.yaml
   expect_error 1 "bad.yaml:[0-9]+: loading.earthquake.mode incident needs a viscous boundary: the incident wave enters through side bottom, which boundaries.viscous does not list \(add it there\)\.$" -- \
     "$DDA" df bad.yaml --blocks out/blocks.h5 -o r.h5
+  sed 's/  viscous: \[bottom\]/  viscous: [bottom]\n  free_field: [top]/' column.yaml > bad.yaml
+  expect_error 1 "bad.yaml:[0-9]+: boundaries.free_field.*must be left or right \(free-field boundaries stand on the lateral sides\), got 'top'\.$" -- \
+    "$DDA" df bad.yaml --blocks out/blocks.h5 -o r.h5
+  sed 's/  viscous: \[bottom\]/  viscous: [bottom, left]\n  free_field: [left]/' column.yaml > bad.yaml
+  expect_error 1 "bad.yaml:[0-9]+: boundaries.free_field.*is also in boundaries.viscous" -- \
+    "$DDA" df bad.yaml --blocks out/blocks.h5 -o r.h5
   sed 's/  viscous: \[bottom\]/  viscous: [bottom, middle]/' column.yaml > bad.yaml
   expect_error 1 "bad.yaml:[0-9]+: boundaries.viscous.*must be bottom, top, left or right, got 'middle'\.$" -- \
     "$DDA" df bad.yaml --blocks out/blocks.h5 -o r.h5

@@ -103,12 +103,16 @@ struct ViscousEdge {
   int block = -1;
   int edge = -1;                     // vertex edge -> edge + 1 of the block
   bool input = false;                // the incident wave enters here
+  bool free_field = false;           // a lateral edge: dashpots relative to the incident wave's free field
 };
 struct ViscousBoundary {
   std::vector<ViscousEdge> edges;
   // v_in(t), m/s, model axes: particle velocity of the incident wave (half
   // the outcrop motion). No rows: no incident wave.
   TimeHistory incident_velocity;
+  // Heights of the base the wave enters through and of the free surface
+  // above the free-field edges (viscous_boundary.hpp), m.
+  double base_y = 0, surface_y = 0;
 };
 
 // Where a fixed point's spring pulls it at time t: its initial position

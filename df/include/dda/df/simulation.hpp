@@ -13,6 +13,7 @@
 // acceleration within the step). A step whose solution is not finite, or
 // moves a block beyond the model even at the smallest dt, throws
 // RunawayError (runaway.hpp).
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -147,8 +148,11 @@ class Simulation {
   void after_accept(double dt);
   void settle();
   void check_runaway(const Eigen::VectorXd& d, double moved, double dt, bool at_min_dt) const;
-  // Dashpot matrix of a viscous boundary edge in the current configuration.
+  // Dashpot matrix of a viscous boundary edge in the current configuration,
+  // and the traction from outside on it during the step [time_, time_ + dt].
   Eigen::Matrix2d edge_dashpot(const ViscousEdge& e) const;
+  std::function<Vec2(const Vec2&)> edge_traction(const ViscousEdge& e, const Eigen::Matrix2d& dashpot,
+                                                 double dt) const;
 
   Model model_;
   std::unique_ptr<LinearSolver> solver_;

@@ -20,6 +20,24 @@
 //   plane stress: Vp = sqrt(E / ((1 - nu^2) rho)),
 //   both:         Vs = sqrt(E / (2 (1 + nu) rho)).
 //
+// Free-field edges (on the lateral sides of a model shaken by an incident
+// wave): the dashpots act on the motion relative to the free field, the
+// motion the incident wave gives a uniform half-space with the model's free
+// surface, and the free field's own stresses are applied:
+//   t = D (v_ff - v) + sigma_ff n.
+// Without them a lateral dashpot drags on the plane wave itself (a layer
+// shaken from below loses half its amplitude next to viscous sides) and a
+// free side lacks the plane wave's stresses. For a base at y_b, a free
+// surface at y_s and the incident velocity v_in(t) (components along x: an
+// S wave at Vs; along y: a P wave at Vp), at height y:
+//   v_ff = v_in(t - (y - y_b)/c) + v_in(t - (2 y_s - y - y_b)/c)
+// (up-going plus its reflection from the free surface, which leaves
+// through the absorbing base), and with v_up, v_dn those two terms
+//   sigma_xy = rho Vs (v_dn,x - v_up,x),  sigma_yy = rho Vp (v_dn,y - v_up,y),
+//   sigma_xx = sigma_yy nu / (1 - nu) (plane strain; nu in plane stress)
+// (no lateral strain in a plane wave). The free field is that of one
+// uniform material, the edge's own: the sides must stand in uniform rock.
+//
 // In the step: DDA integrates with constant acceleration, so the mean
 // velocity over the step is v = T d / dt. The dashpot force is taken at
 // that mean (the trapezoidal rule for a viscous force), which makes it an
@@ -31,6 +49,8 @@
 // (T is linear along the edge, so two-point Gauss quadrature is exact). The
 // energy the dashpots take out of the model in a step is
 // (1/dt) integral of (T d)^T D (T d) ds >= 0.
+#include <functional>
+
 #include "dda/df/block_kinematics.hpp"
 #include "dda/df/model.hpp"
 
@@ -45,20 +65,35 @@ double s_wave_speed(const Material& m);  // m/s
 // rho Vp n n^T + rho Vs s s^T for an edge with outward unit normal n.
 Matrix2d dashpot_matrix(const Material& m, const Vec2& outward_normal);
 
+// The traction an edge receives from outside besides its dashpots' -D v, as
+// a function of the point on the edge (mean over the step): 2 D v_in on an
+// input edge, D v_ff + sigma_ff n on a free-field edge, zero otherwise.
+using EdgeTraction = std::function<Vec2(const Vec2& point)>;
+
+// The incident wave's free field at height y, mean over [t0, t1]
+// (free_field_traction() evaluates D v_ff + sigma_ff n from it).
+struct FreeField {
+  Vec2 velocity{0, 0};   // v_ff
+  Vec2 up{0, 0}, down{0, 0};  // its up- and down-going parts
+};
+FreeField free_field(const TimeHistory& incident, const Material& m, double y, double y_base, double y_surface,
+                     double t0, double t1);
+Vec2 free_field_traction(const FreeField& ff, const Material& m, const Matrix2d& dashpot, const Vec2& outward_normal);
+
 // The dashpots of edge `edge` (vertex edge -> edge + 1, counter-clockwise)
-// of block i with vertices `v` and centroid `c`, and the input traction of
-// an incident wave of mean velocity `v_in` over the step (zero: none).
+// of block i with vertices `v` and centroid `c`, and the traction from
+// outside (empty: none).
 void add_viscous_edge_terms(int i, const Polygon2& v, const Vec2& c, int edge, const Matrix2d& dashpot,
-                            const Vec2& v_in, double dt, BlockSystem& sys);
+                            const EdgeTraction& traction, double dt, BlockSystem& sys);
 
 // Energy the edge's dashpots take out of the model in a step with
-// increment di (J per unit thickness), and the work of the incident wave's
-// traction 2 D v_in on the edge.
+// increment di (J per unit thickness), and the work of the outside
+// traction on the edge.
 struct ViscousEdgeEnergy {
   double absorbed = 0;
   double input_work = 0;
 };
 ViscousEdgeEnergy viscous_edge_energy(const Polygon2& v, const Vec2& c, int edge, const Matrix2d& dashpot,
-                                      const Vec2& v_in, const Vector6d& di, double dt);
+                                      const EdgeTraction& traction, const Vector6d& di, double dt);
 
 }  // namespace dda::df
