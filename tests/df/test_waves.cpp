@@ -165,6 +165,16 @@ double fourier_amplitude(const std::vector<MeasurementSample>& h, const Vec2& di
   return std::abs(sum);
 }
 
+// The frequency of the largest Fourier amplitude on a grid [lo, hi] / step.
+double spectral_peak(const std::vector<MeasurementSample>& h, const Vec2& dir, double lo, double hi, double step) {
+  double best = 0, at = lo;
+  for (double f = lo; f <= hi; f += step) {
+    const double a = fourier_amplitude(h, dir, f);
+    if (a > best) best = a, at = f;
+  }
+  return at;
+}
+
 // A uniform elastic column on a rigid base resonates first at c / (4 H):
 // the base (the bottom edge of the lowest block, y = 0) is moved by two
 // fixed points along the integral of a short vertical Hann velocity pulse
@@ -181,24 +191,13 @@ TEST(Waves, ColumnOnARigidBaseResonatesAtAQuarterWavelength) {
   c.viscous_base = false;
   c.material.poisson = 0;
   ModelInput in = test::wave_column(c, TimeHistory{});
-  TimeHistory lift;
-  const TimeHistory pulse = test::hann_pulse(1e-3, 0.05, Vec2(0, 1));
-  double u = 0;
-  for (std::size_t k = 0; k < pulse.t.size(); ++k) {
-    if (k > 0) u += 0.5 * (pulse.t[k] - pulse.t[k - 1]) * (pulse.value[k].y() + pulse.value[k - 1].y());
-    lift.t.push_back(pulse.t[k]);
-    lift.value.emplace_back(0, u);
-  }
+  const TimeHistory lift = test::hann_shift(1e-3, 0.05, Vec2(0, 1));
   for (const double x : {0.0, c.width}) in.fixed_points.push_back({"base", {x, 0}, 0, std::nullopt, lift});
   in.control.dt = 2e-3;
   in.control.total_time = 10;
   Simulation sim(build_model(in));
   sim.run();
-  double best = 0, f1 = 0;
-  for (double f = 0.5; f <= 3.0; f += 0.002) {
-    const double a = fourier_amplitude(sim.histories().back(), Vec2(0, 1), f);
-    if (a > best) best = a, f1 = f;
-  }
+  const double f1 = spectral_peak(sim.histories().back(), Vec2(0, 1), 0.5, 3.0, 0.002);
   const double expected = std::sqrt(c.material.young / c.material.density) / (4 * c.blocks * c.height);
   EXPECT_NEAR(f1, expected, 0.01 * expected);
   RecordProperty("f1", std::to_string(f1));
@@ -221,14 +220,7 @@ TEST(Waves, LayerOnARigidBaseResonatesAtVsOver4H) {
   c.width = 5;
   c.material.plane = PlaneMode::Strain;
   ModelInput in = test::wave_column(c, TimeHistory{});
-  TimeHistory shift;
-  const TimeHistory pulse = test::hann_pulse(1e-3, 0.02, Vec2(1, 0));
-  double u = 0;
-  for (std::size_t k = 0; k < pulse.t.size(); ++k) {
-    if (k > 0) u += 0.5 * (pulse.t[k] - pulse.t[k - 1]) * (pulse.value[k].x() + pulse.value[k - 1].x());
-    shift.t.push_back(pulse.t[k]);
-    shift.value.emplace_back(u, 0);
-  }
+  const TimeHistory shift = test::hann_shift(1e-3, 0.02, Vec2(1, 0));
   for (int j = 0; j < c.columns; ++j)
     for (const double x : {0.0, c.width})
       in.fixed_points.push_back({"base", {j * c.width + x, 0}, test::column_block(c, 0, j), std::nullopt, shift});
@@ -236,11 +228,7 @@ TEST(Waves, LayerOnARigidBaseResonatesAtVsOver4H) {
   in.control.total_time = 2;
   Simulation sim(build_model(in));
   sim.run();
-  double best = 0, f1 = 0;
-  for (double f = 2; f <= 10.0; f += 0.005) {
-    const double a = fourier_amplitude(sim.histories().back(), Vec2(1, 0), f);
-    if (a > best) best = a, f1 = f;
-  }
+  const double f1 = spectral_peak(sim.histories().back(), Vec2(1, 0), 2.0, 10.0, 0.005);
   const double expected = s_wave_speed(c.material) / (4 * c.blocks * c.height);
   EXPECT_NEAR(f1, expected, 0.01 * expected);
   RecordProperty("f1", std::to_string(f1));

@@ -43,6 +43,20 @@ inline TimeHistory hann_pulse(double amplitude, double tau, const Vec2& directio
   return h;
 }
 
+// The displacement of a Hann velocity pulse (its integral, trapezoidal on
+// the pulse's samples): a smooth shift by amplitude * tau / 2.
+inline TimeHistory hann_shift(double amplitude, double tau, const Vec2& direction) {
+  const TimeHistory pulse = hann_pulse(amplitude, tau, direction);
+  TimeHistory shift;
+  Vec2 u(0, 0);
+  for (std::size_t k = 0; k < pulse.t.size(); ++k) {
+    if (k > 0) u += 0.5 * (pulse.t[k] - pulse.t[k - 1]) * (pulse.value[k] + pulse.value[k - 1]);
+    shift.t.push_back(pulse.t[k]);
+    shift.value.push_back(u);
+  }
+  return shift;
+}
+
 // A sine of `amplitude` and angular frequency `omega` for `cycles` cycles,
 // ramped in and out over one cycle each with a Hann taper.
 inline TimeHistory tapered_sine(double amplitude, double omega, int cycles, const Vec2& direction) {
