@@ -107,6 +107,24 @@ TEST(EntranceEdge, FarBlocksHaveNoContact) {
   EXPECT_TRUE(find_contacts(blocks, {{0, 1}}, 0.1).empty());
 }
 
+// A thin wedge (3.5 x 23 m, 8.8 degrees) that a vertical joint cuts off a
+// sloping cliff face, resting on the block below it (coordinates of the
+// site_response example's mesh, which threw it off at 38 m/s before the
+// fix): its bottom-right vertex lies on the lower block's top edge, 0.52 m
+// past the end of the lower block's short slanted edge, whose line it is
+// 3.46 m "inside". With a search distance of 8.75 m that edge is within
+// reach; the contact must be with the top edge, in exact touch, never with
+// the slanted one.
+TEST(EntranceEdge, VertexBesideAShortEdgeIsNotAPenetrationOfIt) {
+  const std::vector<Polygon2> blocks{
+      {{954.177, 319.52}, {987.937, 319.52}, {987.937, 364.607}, {954.691, 364.607}, {954.177, 361.179}},
+      {{954.691, 364.607}, {958.187, 364.607}, {958.187, 387.916}}};
+  const auto found = find_contacts(blocks, {{0, 1}}, 8.75);
+  ASSERT_FALSE(found.empty());
+  for (const ContactCandidate& c : found)
+    EXPECT_GT(c.dn, -1e-6) << c.vblock << "/" << c.vertex << " on " << c.eblock << "/" << c.edge;
+}
+
 TEST(BroadPhase, SameAsBruteForce) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> pos(0, 50), size(0.2, 3);
