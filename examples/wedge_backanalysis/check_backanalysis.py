@@ -13,21 +13,7 @@ import argparse
 import json
 import sys
 
-
-def read_table(path):
-    """(t, phi) rows of a `dda sliding3d --friction-table` CSV (first angle)."""
-    rows = []
-    with open(path) as f:
-        for line in f:
-            line = line.split("#", 1)[0].strip()
-            if not line:
-                continue
-            cells = [c for c in line.replace(";", ",").replace("\t", ",").replace(" ", ",").split(",") if c]
-            try:
-                rows.append((float(cells[0]), float(cells[1])))
-            except ValueError:
-                continue  # header
-    return rows
+from friction_table import read_friction_table  # (this folder)
 
 
 def phi_at(rows, t):
@@ -66,7 +52,7 @@ def main():
 
     with open(a.backfit) as f:
         bf = json.load(f)
-    rows = read_table(a.friction_table)
+    rows = read_friction_table(a.friction_table)
     print(f"{'segment':>14} {'true phi':>9} {'fitted phi':>11} {'error':>8}  {'mu':>7} {'mean v [mm/s]':>13}")
     for s in bf["segments"]:
         t0, t1 = s["t0"], s["t1"]

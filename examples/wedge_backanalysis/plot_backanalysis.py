@@ -26,6 +26,8 @@ import matplotlib.pyplot as plt
 import matplotlib.ticker
 import numpy as np
 
+from friction_table import read_friction_table  # (this folder)
+
 G = 9.81
 
 
@@ -41,22 +43,6 @@ def history(out, name):
     u = np.column_stack([h["ux"], h["uy"], h["uz"]])
     v = np.column_stack([h["vx"], h["vy"], h["vz"]])
     return h["t"], u @ e, v @ e, np.linalg.norm(v, axis=1)
-
-
-def read_table(path):
-    """(t, phi) rows of a friction table (first angle), comments and header skipped."""
-    rows = []
-    with open(path) as f:
-        for line in f:
-            line = line.split("#", 1)[0].strip()
-            if not line:
-                continue
-            cells = [c for c in line.replace(";", ",").replace("\t", ",").replace(" ", ",").split(",") if c]
-            try:
-                rows.append((float(cells[0]), float(cells[1])))
-            except ValueError:
-                continue
-    return np.array(rows)
 
 
 def main():
@@ -76,7 +62,7 @@ def main():
     t_d, s_d, _, _ = history(out, "sliding_degrading")
     bf = load_json(os.path.join(out, "backfit.json"))
     segs = bf["segments"]
-    true = read_table(a.friction_table)
+    true = np.array(read_friction_table(a.friction_table))
     yields = []
     for name in sorted(f for f in os.listdir(out) if f.startswith("wedge") and f.endswith(".json")):
         w = load_json(os.path.join(out, name))
