@@ -34,8 +34,7 @@ Eigen::Matrix2d Simulation::edge_dashpot(const ViscousEdge& e) const {
   return dashpot_matrix(model_.materials[model_.block_material[e.block]], outward_normal(blocks_[e.block].vertices, e.edge));
 }
 
-std::function<Vec2(const Vec2&)> Simulation::edge_traction(const ViscousEdge& e, const Eigen::Matrix2d& dashpot,
-                                                           double dt) const {
+EdgeTraction Simulation::edge_traction(const ViscousEdge& e, const Eigen::Matrix2d& dashpot, double dt) const {
   const ViscousBoundary& vb = *model_.viscous_boundary;
   // No incident wave, or settling into equilibrium (time stands still): the
   // dashpots alone.

@@ -39,6 +39,17 @@ Peak peak_of(const std::vector<MeasurementSample>& h, const Vec2& dir) {
   return p;
 }
 
+// A glued layer of `columns` x 24 blocks of 5 x 2.5 m (60 m high), plane
+// strain: wide enough that its blocks are held laterally by neighbours.
+ColumnSpec plane_strain_layer(int columns) {
+  ColumnSpec c;
+  c.blocks = 24;
+  c.columns = columns;
+  c.width = 5;
+  c.material.plane = PlaneMode::Strain;
+  return c;
+}
+
 double max_stored(const Simulation& sim) {
   double e = 0;
   for (const EnergyRecord& r : sim.energy_log()) e = std::max(e, r.stored());
@@ -92,11 +103,7 @@ TEST(Waves, PPulseInABarArrivesDoublesAtTheTopAndLeavesThroughTheBase) {
 // blocks carry the complementary shear only through the shear springs of
 // their side contacts).
 TEST(Waves, PAndSPulsesCrossALayerAtTheMediumsWaveSpeeds) {
-  ColumnSpec c;
-  c.blocks = 24;
-  c.columns = 21;
-  c.width = 5;
-  c.material.plane = PlaneMode::Strain;
+  ColumnSpec c = plane_strain_layer(21);
   const double tau = 0.06;
   for (const bool shear : {false, true}) {
     const Vec2 dir = shear ? Vec2(1, 0) : Vec2(0, 1);
@@ -243,11 +250,7 @@ TEST(Waves, LayerOnARigidBaseResonatesAtVsOver4H) {
 // dashpots drag on the plane wave itself): the free field is what makes a
 // narrow model see the wave of a wide one.
 TEST(Waves, FreeFieldSidesLetANarrowLayerMoveAsTheWaveDoes) {
-  ColumnSpec c;
-  c.blocks = 24;
-  c.columns = 10;
-  c.width = 5;
-  c.material.plane = PlaneMode::Strain;
+  ColumnSpec c = plane_strain_layer(10);
   for (const bool shear : {false, true}) {
     const Vec2 dir = shear ? Vec2(1, 0) : Vec2(0, 1);
     for (const bool free_field : {true, false}) {

@@ -13,7 +13,6 @@
 // acceleration within the step). A step whose solution is not finite, or
 // moves a block beyond the model even at the smallest dt, throws
 // RunawayError (runaway.hpp).
-#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -27,6 +26,7 @@
 #include "dda/df/linear_solver.hpp"
 #include "dda/df/model.hpp"
 #include "dda/df/step_timings.hpp"
+#include "dda/df/viscous_boundary.hpp"
 
 namespace dda::df {
 
@@ -151,8 +151,7 @@ class Simulation {
   // Dashpot matrix of a viscous boundary edge in the current configuration,
   // and the traction from outside on it during the step [time_, time_ + dt].
   Eigen::Matrix2d edge_dashpot(const ViscousEdge& e) const;
-  std::function<Vec2(const Vec2&)> edge_traction(const ViscousEdge& e, const Eigen::Matrix2d& dashpot,
-                                                 double dt) const;
+  EdgeTraction edge_traction(const ViscousEdge& e, const Eigen::Matrix2d& dashpot, double dt) const;
 
   Model model_;
   std::unique_ptr<LinearSolver> solver_;
