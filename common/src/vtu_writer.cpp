@@ -6,6 +6,7 @@
 #include <type_traits>
 
 #include "dda/common/atomic_file.hpp"
+#include "dda/common/error.hpp"
 
 namespace dda {
 namespace {
@@ -69,11 +70,37 @@ void data_section(std::string& out, const char* tag, const ArrayList& arrays) {
 
 }  // namespace
 
+void VtuGrid::add_point(const Vec3& p) {
+  points_.push_back(p.x());
+  points_.push_back(p.y());
+  points_.push_back(p.z());
+}
+
 void VtuGrid::add_cell(std::size_t n, int vtk_type) {
   const auto first = static_cast<std::int64_t>(num_points() - n);
   for (std::size_t k = 0; k < n; ++k) connectivity_.push_back(first + static_cast<std::int64_t>(k));
   offsets_.push_back(static_cast<std::int64_t>(connectivity_.size()));
   types_.push_back(static_cast<std::uint8_t>(vtk_type));
+  if (!face_offsets_.empty()) face_offsets_.push_back(-1);
+}
+
+void VtuGrid::add_polyhedron(std::size_t n, const std::vector<std::vector<int>>& faces) {
+  const auto first = static_cast<std::int64_t>(num_points() - n);
+  for (const auto& f : faces)
+    for (int k : f)
+      if (k < 0 || static_cast<std::size_t>(k) >= n)
+        throw InternalError("VtuGrid::add_polyhedron: face point " + std::to_string(k) +
+                            " of a cell of " + std::to_string(n) + " points");
+  // The cells before the first polyhedron have no faces.
+  if (face_offsets_.empty()) face_offsets_.assign(types_.size(), -1);
+  add_cell(n, kVtkPolyhedron);
+  face_offsets_.resize(types_.size() - 1);  // drop the -1 add_cell gave it, if any
+  faces_.push_back(static_cast<std::int64_t>(faces.size()));
+  for (const auto& f : faces) {
+    faces_.push_back(static_cast<std::int64_t>(f.size()));
+    for (int k : f) faces_.push_back(first + k);
+  }
+  face_offsets_.push_back(static_cast<std::int64_t>(faces_.size()));
 }
 
 void VtuGrid::cell_data(std::string name, int components, std::vector<double> values) {
@@ -105,6 +132,10 @@ std::string VtuGrid::to_xml() const {
   data_array(out, "connectivity", 1, connectivity_);
   data_array(out, "offsets", 1, offsets_);
   data_array(out, "types", 1, types_);
+  if (!face_offsets_.empty()) {
+    data_array(out, "faces", 1, faces_);
+    data_array(out, "faceoffsets", 1, face_offsets_);
+  }
   out += "      </Cells>\n";
   data_section(out, "PointData", point_arrays_);
   data_section(out, "CellData", cell_arrays_);

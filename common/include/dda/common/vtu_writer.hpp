@@ -2,13 +2,16 @@
 // One writer for every ParaView .vtu file the project makes (lines, blocks,
 // forward-run frames, contacts): a VTK XML UnstructuredGrid with ASCII data
 // arrays, written atomically. Callers add points and cells, then named cell
-// or point arrays; the grid knows nothing about rock.
+// or point arrays; the grid knows nothing about rock. Points are 3D (2D
+// points get z = 0); polyhedron cells carry their faces in the `faces` and
+// `faceoffsets` arrays of the VTK XML format.
 #include <cstdint>
 #include <string>
 #include <variant>
 #include <vector>
 
 #include "dda/common/geometry.hpp"
+#include "dda/common/geometry3.hpp"
 
 namespace dda {
 
@@ -16,12 +19,18 @@ namespace dda {
 inline constexpr int kVtkVertex = 1;
 inline constexpr int kVtkLine = 3;
 inline constexpr int kVtkPolygon = 7;
+inline constexpr int kVtkPolyhedron = 42;
 
 class VtuGrid {
  public:
   void add_point(const Vec2& p) { points_.insert(points_.end(), {p.x(), p.y(), 0.0}); }
-  // A cell over the last `n` points added.
+  void add_point(const Vec3& p);
+  // A cell over the last `n` points added (not for polyhedra).
   void add_cell(std::size_t n, int vtk_type);
+  // A VTK_POLYHEDRON cell over the last `n` points added; each face lists
+  // point numbers 0 .. n-1 among those, counter-clockwise seen from outside.
+  // InternalError for a number out of range.
+  void add_polyhedron(std::size_t n, const std::vector<std::vector<int>>& faces);
 
   std::size_t num_points() const { return points_.size() / 3; }
   std::size_t num_cells() const { return types_.size(); }
@@ -45,6 +54,9 @@ class VtuGrid {
   };
   std::vector<double> points_;
   std::vector<std::int64_t> connectivity_, offsets_;
+  // Per cell, the end of its stream in faces_, -1 for cells without faces;
+  // both stay empty (and are not written) until a polyhedron is added.
+  std::vector<std::int64_t> faces_, face_offsets_;
   std::vector<std::uint8_t> types_;
   std::vector<Array> cell_arrays_, point_arrays_;
 };

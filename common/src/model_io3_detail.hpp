@@ -1,0 +1,79 @@
+#pragma once
+// Private to dda_common: the pieces the 3D HDF5 files (fractures, blocks3d)
+// share. Readers turn every problem into one InputError naming the file
+// (through h5::Reader::fail); the layout itself is documented in
+// docs/formats.md.
+//
+// The 2D files (model_io.cpp) keep their own copies of the generic helpers
+// for now; they could move onto these.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "dda/common/fracture_model.hpp"
+#include "dda/common/h5_util.hpp"
+
+namespace dda::io3 {
+
+constexpr int kFormatVersion = 1;
+constexpr const char* kUnits =
+    "SI: lengths m, areas m^2, volumes m^3, second moments m^5, angles deg";
+constexpr const char* kSetCodes =
+    "joint set index (0, 1, ...; see /sets), -1 domain boundary, -2 excavation, -3 artificial";
+
+// ------------------------------------------------------------------ writing
+
+void write_root_attributes(h5::Writer& w, const char* format, const Provenance& p);
+// Rows of x y z, for an (n, 3) dataset.
+std::vector<double> flatten(const std::vector<Vec3>& v);
+void write_domain(h5::Writer& w, const Box3& box);
+void write_sets(h5::Writer& w, const std::vector<JointSetInfo>& sets);
+void write_points(h5::Writer& w, const std::vector<ModelPoint3>& points);
+void write_layers(h5::Writer& w, const std::vector<Layer>& layers, const Vec3& bed_normal);
+
+// ------------------------------------------------------------------ reading
+
+// `format` is `expected` and `format_version` one this code reads.
+void check_format(const h5::Reader& r, const std::string& expected);
+Provenance read_provenance(const h5::Reader& r);
+// A finite float64 root attribute, 0 if absent.
+double root_number(const h5::Reader& r, const char* name);
+
+// An (n, cols) float64 dataset with exactly n rows (one per `what`), finite.
+std::vector<double> read_rows(const h5::Reader& r, const std::string& ds, std::size_t n,
+                              std::size_t cols, const std::string& what);
+// An (n, cols) float64 dataset of any n, finite; `rows` receives n.
+std::vector<double> read_table(const h5::Reader& r, const std::string& ds, std::size_t cols,
+                               std::size_t& rows);
+// A 1-D float64 dataset of exactly n values, finite.
+std::vector<double> read_vector(const h5::Reader& r, const std::string& ds, std::size_t n,
+                                const std::string& what);
+// A 1-D integer dataset of exactly n values, each in [lo, hi].
+std::vector<int> read_ints(const h5::Reader& r, const std::string& ds, std::size_t n,
+                           const std::string& what, long long lo, long long hi);
+// A 1-D integer dataset of any length, each in [lo, hi].
+std::vector<int> read_int_list(const h5::Reader& r, const std::string& ds, long long lo,
+                               long long hi);
+std::vector<std::string> read_strings(const h5::Reader& r, const std::string& ds, std::size_t n,
+                                      const std::string& what);
+// CSR offsets: at least one entry, starting at 0, ending at `total`, each
+// step at least `min_step` (item i owns [offsets[i], offsets[i+1])). `item`
+// names what an entry is ("polygon", "face") for the message.
+std::vector<std::int64_t> read_offsets(const h5::Reader& r, const std::string& ds,
+                                       std::size_t total, long long min_step,
+                                       const std::string& item);
+// A dataset of whole shape `dims`, finite (for fixed shapes like (2, 3)).
+std::vector<double> read_fixed(const h5::Reader& r, const std::string& ds,
+                               const std::vector<hsize_t>& dims);
+
+Box3 read_domain(const h5::Reader& r);
+std::vector<JointSetInfo> read_sets(const h5::Reader& r);
+std::vector<ModelPoint3> read_points(const h5::Reader& r);
+// The beds and, through `bed_normal`, their normal ((0, 0, 1) if absent).
+std::vector<Layer> read_layers(const h5::Reader& r, Vec3& bed_normal);
+
+inline Vec3 row3(const std::vector<double>& v, std::size_t i) {
+  return {v[3 * i], v[3 * i + 1], v[3 * i + 2]};
+}
+
+}  // namespace dda::io3

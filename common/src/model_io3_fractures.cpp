@@ -1,0 +1,163 @@
+// The fractures file (`dda-fractures`): DL's 3D output. Layout in
+// docs/formats.md; keep the two in step.
+
+#include "dda/common/atomic_file.hpp"
+#include "dda/common/model_io3.hpp"
+#include "model_io3_detail.hpp"
+
+namespace dda {
+namespace {
+
+void write_excavations(h5::Writer& w, const std::vector<Excavation3>& excavations) {
+  h5::Id g = w.group("excavations");
+  std::vector<std::string> names;
+  std::vector<double> planes;
+  std::vector<std::int64_t> offsets{0};
+  for (const Excavation3& e : excavations) {
+    names.push_back(e.name);
+    for (const HalfSpace& h : e.region.half_spaces)
+      planes.insert(planes.end(), {h.normal.x(), h.normal.y(), h.normal.z(), h.offset});
+    offsets.push_back(static_cast<std::int64_t>(planes.size() / 4));
+  }
+  w.strings(g.get(), "name", names, "", "name of excavation i (UTF-8)");
+  w.f64(g.get(), "half_spaces", planes, {planes.size() / 4, 4}, "m",
+        "half-spaces nx ny nz d (n . x <= d; n outward, any length) of all excavations, "
+        "one excavation after another; the excavation is their intersection");
+  w.i64(g.get(), "offsets", offsets, "",
+        "excavation i is half_spaces[offsets[i]:offsets[i+1]]; E+1 entries");
+}
+
+void write_fractures(h5::Writer& w, const std::vector<Fracture3>& fractures) {
+  h5::Id g = w.group("fractures");
+  std::vector<std::int32_t> shape, set, kind, layer;
+  std::vector<Vec3> normal, centre, vertices;
+  std::vector<double> radius;
+  std::vector<std::int64_t> offsets{0};
+  for (const Fracture3& f : fractures) {
+    shape.push_back(static_cast<std::int32_t>(f.shape));
+    normal.push_back(f.normal);
+    centre.push_back(f.centre);
+    radius.push_back(f.radius);
+    vertices.insert(vertices.end(), f.vertices.begin(), f.vertices.end());
+    offsets.push_back(static_cast<std::int64_t>(vertices.size()));
+    set.push_back(f.set);
+    kind.push_back(static_cast<std::int32_t>(f.kind));
+    layer.push_back(f.layer);
+  }
+  const hsize_t n = fractures.size();
+  w.i32(g.get(), "shape", shape, "", "shape of fracture i: 0 plane, 1 disc, 2 polygon");
+  w.f64(g.get(), "normal", io3::flatten(normal), {n, 3}, "1",
+        "unit normal x, y, z of fracture i (upper hemisphere)");
+  w.f64(g.get(), "centre", io3::flatten(centre), {n, 3}, "m",
+        "a point of the plane of fracture i: the disc centre, polygon centroid, or any point");
+  w.f64(g.get(), "radius", radius, {n}, "m", "radius of a disc fracture (0 for other shapes)");
+  w.f64(g.get(), "vertices", io3::flatten(vertices), {vertices.size(), 3}, "m",
+        "vertices of the polygon fractures, counter-clockwise about the normal, one after another");
+  w.i64(g.get(), "offsets", offsets, "",
+        "fracture i has vertices[offsets[i]:offsets[i+1]] (none unless a polygon); F+1 entries");
+  w.i32(g.get(), "set", set, "", std::string("joint set of fracture i: ") + io3::kSetCodes);
+  w.i32(g.get(), "kind", kind, "", "kind of fracture i: 0 joint, 1 bedding");
+  w.i32(g.get(), "layer", layer, "",
+        "bed fracture i was generated in (index into /layers), -1 if none");
+}
+
+std::vector<Excavation3> read_excavations(const h5::Reader& r) {
+  std::vector<Excavation3> out;
+  if (!r.exists("/excavations")) return out;
+  std::vector<std::string> names = r.strings("/excavations/name");
+  std::size_t nh = 0;
+  const std::vector<double> planes = io3::read_table(r, "/excavations/half_spaces", 4, nh);
+  const std::vector<std::int64_t> off =
+      io3::read_offsets(r, "/excavations/offsets", nh, 1, "excavation");
+  if (off.size() != names.size() + 1)
+    r.fail("dataset /excavations/offsets has " + std::to_string(off.size()) +
+           " entries, expected " + std::to_string(names.size() + 1) +
+           ", one more than /excavations/name");
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    Excavation3 e;
+    e.name = names[i];
+    for (auto k = static_cast<std::size_t>(off[i]); k < static_cast<std::size_t>(off[i + 1]); ++k)
+      e.region.half_spaces.push_back(
+          {Vec3(planes[4 * k], planes[4 * k + 1], planes[4 * k + 2]), planes[4 * k + 3]});
+    out.push_back(std::move(e));
+  }
+  return out;
+}
+
+std::vector<Fracture3> read_fractures(const h5::Reader& r, long long nsets, long long nlayers) {
+  const std::vector<int> shape = io3::read_int_list(r, "/fractures/shape", 0, 2);
+  const std::size_t n = shape.size();
+  const std::vector<double> normal = io3::read_rows(r, "/fractures/normal", n, 3, "fracture");
+  const std::vector<double> centre = io3::read_rows(r, "/fractures/centre", n, 3, "fracture");
+  const std::vector<double> radius = io3::read_vector(r, "/fractures/radius", n, "fracture");
+  std::size_t nv = 0;
+  const std::vector<double> xyz = io3::read_table(r, "/fractures/vertices", 3, nv);
+  const std::vector<std::int64_t> off =
+      io3::read_offsets(r, "/fractures/offsets", nv, 0, "fracture");
+  if (off.size() != n + 1)
+    r.fail("dataset /fractures/offsets has " + std::to_string(off.size()) + " entries, expected " +
+           std::to_string(n + 1) + ", one more than the fractures");
+  const std::vector<int> set =
+      io3::read_ints(r, "/fractures/set", n, "fracture", kArtificialSet, nsets - 1);
+  const std::vector<int> kind = io3::read_ints(r, "/fractures/kind", n, "fracture", 0, 1);
+  const std::vector<int> layer =
+      io3::read_ints(r, "/fractures/layer", n, "fracture", -1, nlayers - 1);
+
+  std::vector<Fracture3> out(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    Fracture3& f = out[i];
+    f.shape = static_cast<FractureShape>(shape[i]);
+    f.normal = io3::row3(normal, i);
+    f.centre = io3::row3(centre, i);
+    f.radius = radius[i];
+    const auto a = static_cast<std::size_t>(off[i]), b = static_cast<std::size_t>(off[i + 1]);
+    // A polygon needs an outline; a plane or disc has none.
+    const bool polygon = f.shape == FractureShape::Polygon;
+    if (polygon ? b - a < 3 : b != a)
+      r.fail("fracture " + std::to_string(i) + " is a " + to_string(f.shape) + " with " +
+             std::to_string(b - a) + " vertices in /fractures/offsets (" +
+             (polygon ? "a polygon needs at least 3" : "only polygons have vertices") + ")");
+    if (f.radius < 0)
+      r.fail("fracture " + std::to_string(i) + " has a negative radius in /fractures/radius");
+    for (std::size_t k = a; k < b; ++k) f.vertices.push_back(io3::row3(xyz, k));
+    f.set = set[i];
+    f.kind = static_cast<LineKind>(kind[i]);
+    f.layer = layer[i];
+  }
+  return out;
+}
+
+}  // namespace
+
+void write_fractures_h5(const std::string& path, const FractureModel& model) {
+  AtomicOutput out(path);
+  {
+    h5::Writer w(path, out.temp_path());
+    io3::write_root_attributes(w, kFracturesFormat, model.provenance);
+    io3::write_domain(w, model.domain);
+    write_excavations(w, model.excavations);
+    write_fractures(w, model.fractures);
+    io3::write_sets(w, model.sets);
+    io3::write_points(w, model.points);
+    io3::write_layers(w, model.layers, model.bed_normal);
+    w.close();
+  }
+  out.commit();
+}
+
+FractureModel read_fractures_h5(const std::string& path) {
+  h5::Reader r(path);
+  io3::check_format(r, kFracturesFormat);
+  FractureModel m;
+  m.provenance = io3::read_provenance(r);
+  m.domain = io3::read_domain(r);
+  m.sets = io3::read_sets(r);
+  m.points = io3::read_points(r);
+  m.layers = io3::read_layers(r, m.bed_normal);
+  m.excavations = read_excavations(r);
+  m.fractures = read_fractures(r, static_cast<long long>(m.sets.size()),
+                               static_cast<long long>(m.layers.size()));
+  return m;
+}
+
+}  // namespace dda
