@@ -134,4 +134,22 @@ FeretMeasures feret_measures(const Polygon2& poly) {
 
 double min_feret_width(const Polygon2& poly) { return feret_measures(poly).min_width; }
 
+bool convex_polygons_overlap(const Polygon2& a, const Polygon2& b, double tol) {
+  // Separated if all of one polygon lies beyond (or within tol of) an edge
+  // line of the other.
+  auto separated_by_edges_of = [tol](const Polygon2& p, const Polygon2& q) {
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      const Vec2 e = p[(i + 1) % p.size()] - p[i];
+      const Vec2 n(e.y(), -e.x());  // outward for a counter-clockwise p
+      const double len = n.norm();
+      if (len == 0) continue;
+      double nearest = std::numeric_limits<double>::infinity();
+      for (const Vec2& v : q) nearest = std::min(nearest, (v - p[i]).dot(n) / len);
+      if (nearest >= -tol) return true;
+    }
+    return false;
+  };
+  return !separated_by_edges_of(a, b) && !separated_by_edges_of(b, a);
+}
+
 }  // namespace dda

@@ -49,6 +49,11 @@ void make_counter_clockwise(Polygon2& poly);
 // perpendicular to it).
 double extent_along(const Polygon2& poly, const Vec2& dir);
 
+// Whether two convex counter-clockwise polygons share an area: a
+// separating-axis test where touching within `tol` (edge to edge, corner to
+// edge) counts as apart.
+bool convex_polygons_overlap(const Polygon2& a, const Polygon2& b, double tol);
+
 // Convex hull, counter-clockwise, without collinear points.
 Polygon2 convex_hull(Polygon2 points);
 

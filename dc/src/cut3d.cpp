@@ -1,0 +1,160 @@
+#include "dda/dc/cut3d.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+#include "cut3d_internal.hpp"
+#include "dda/common/error.hpp"
+#include "fracture_extent.hpp"
+
+namespace dda::dc {
+
+using detail3::Work;
+
+namespace detail3 {
+
+int classify(const Work& w, const cell::Cell& c, int h, std::vector<std::int8_t>& sides) {
+  return cell::classify(c, w.table, h, sides, w.snap);
+}
+
+void split(const Work& w, const cell::Cell& c, int h, std::vector<std::int8_t>& sides, int cap_tag,
+           cell::Cell& below, cell::Cell& above) {
+  try {
+    cell::split(c, w.table, h, sides, cap_tag, below, above);
+  } catch (const InternalError&) {
+    if (w.snap <= 0) throw;
+    if (cell::classify(c, w.table, h, sides, 0) != 0) throw;
+    cell::split(c, w.table, h, sides, cap_tag, below, above);
+  }
+}
+
+}  // namespace detail3
+
+namespace {
+
+void check_input(const FractureModel& m) {
+  for (int i = 0; i < 3; ++i)
+    if (!(std::isfinite(m.domain.lo[i]) && std::isfinite(m.domain.hi[i]) && m.domain.lo[i] < m.domain.hi[i]))
+      throw InputError("fractures file: the domain box must have finite lo < hi on every axis");
+  for (std::size_t i = 0; i < m.fractures.size(); ++i) {
+    const Fracture3& f = m.fractures[i];
+    std::ostringstream where;
+    where << "fractures file: fracture " << i << " ";
+    if (!f.normal.allFinite() || f.normal.norm() < 1e-12 || !f.centre.allFinite())
+      throw InputError(where.str() + "has a zero or non-finite normal or centre");
+    if (f.shape == FractureShape::Disc && !(f.radius > 0 && std::isfinite(f.radius)))
+      throw InputError(where.str() + "is a disc without a positive finite radius");
+    if (f.shape == FractureShape::Polygon && f.vertices.size() < 3)
+      throw InputError(where.str() + "is a polygon with fewer than 3 vertices");
+    if (f.set < 0 || f.set >= static_cast<int>(m.sets.size()))
+      throw InputError(where.str() + "names a joint set that the file does not list");
+  }
+  for (const auto& e : m.excavations)
+    for (const auto& h : e.region.half_spaces)
+      if (!h.normal.allFinite() || h.normal.norm() < 1e-12 || !std::isfinite(h.offset))
+        throw InputError("fractures file: excavation '" + e.name + "' has a zero or non-finite half-space normal");
+}
+
+bool boxes_meet(const Box3& a, const Box3& b) {
+  return (a.lo.array() <= b.hi.array()).all() && (b.lo.array() <= a.hi.array()).all();
+}
+
+// One fracture against every cell. Returns the number of cells it split;
+// `partial` counts the cells it ends inside of.
+std::size_t cut_with(Work& w, const Fracture3& f, const FractureExtent& extent, std::size_t& partial) {
+  const int h = w.table.add(f.normal, f.offset());
+  std::vector<std::int8_t> sides;
+  std::vector<cell::Cell> added;
+  std::size_t splits = 0;
+  for (auto& c : w.cells) {
+    if (extent.bounded() && !boxes_meet(c.bounds, extent.bounds())) continue;
+    if (cell::bounds_side(c, w.table[h]) != 0) continue;
+    if (detail3::classify(w, c, h, sides) != 0) continue;
+    if (extent.bounded()) {
+      const Coverage cov = extent.coverage(cell::section_points(c, w.table, h, sides));
+      if (cov == Coverage::None) continue;
+      if (cov == Coverage::Partial) {
+        ++partial;
+        continue;
+      }
+    }
+    cell::Cell below, above;
+    detail3::split(w, c, h, sides, f.set, below, above);
+    c = std::move(below);
+    added.push_back(std::move(above));
+    ++splits;
+  }
+  for (auto& c : added) w.cells.push_back(std::move(c));
+  return splits;
+}
+
+}  // namespace
+
+Cut3dResult cut_blocks_3d(const FractureModel& in, const Cut3dOptions& options) {
+  const auto t0 = std::chrono::steady_clock::now();
+  check_input(in);
+  Work w;
+  w.snap = options.snap_tolerance > 0 ? options.snap_tolerance : 1e-9 * (in.domain.hi - in.domain.lo).norm();
+  w.cells.push_back(cell::make_box(w.table, in.domain, kBoundarySet));
+
+  std::vector<std::size_t> persistent, finite;
+  for (std::size_t i = 0; i < in.fractures.size(); ++i)
+    (in.fractures[i].shape == FractureShape::Plane ? persistent : finite).push_back(i);
+
+  std::size_t partial = 0;
+  for (std::size_t i : persistent) w.splits += cut_with(w, in.fractures[i], FractureExtent(in.fractures[i]), partial);
+
+  // Finite fractures, pass after pass, each time only those that still end
+  // inside some block, until a pass cuts nothing.
+  std::vector<FractureExtent> extents;
+  extents.reserve(finite.size());
+  for (std::size_t i : finite) extents.emplace_back(in.fractures[i]);
+  std::vector<std::size_t> pending(finite.size());
+  for (std::size_t k = 0; k < finite.size(); ++k) pending[k] = k;
+  int passes = 0;
+  std::size_t unfinished_fractures = 0, unfinished_cells = 0;
+  while (!pending.empty()) {
+    ++passes;
+    std::vector<std::size_t> still;
+    std::size_t cut_this_pass = 0;
+    unfinished_cells = 0;
+    for (std::size_t k : pending) {
+      std::size_t part = 0;
+      cut_this_pass += cut_with(w, in.fractures[finite[k]], extents[k], part);
+      if (part > 0) still.push_back(k);
+      unfinished_cells += part;
+    }
+    w.splits += cut_this_pass;
+    unfinished_fractures = still.size();
+    if (cut_this_pass == 0 || still.empty()) break;
+    pending = std::move(still);
+  }
+  const std::size_t blocks_before_excavation = w.cells.size();
+
+  detail3::excavate(w, in.excavations);
+
+  Cut3dResult result;
+  std::size_t removed_by_holes = 0;
+  detail3::build_output(w, in, options, result.model, removed_by_holes);
+  result.model.unfinished_cuts = static_cast<int>(unfinished_fractures);
+
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  auto& r = result.report;
+  r["persistent_planes"] = persistent.size();
+  r["finite_fractures"] = finite.size();
+  r["splits"] = w.splits;
+  r["snap_tolerance"] = w.snap;
+  r["finite_passes"] = passes;
+  r["unfinished_fractures"] = unfinished_fractures;
+  r["unfinished_block_crossings"] = unfinished_cells;
+  r["blocks_before_excavation"] = blocks_before_excavation;
+  r["excavated_volume"] = w.excavated_volume;
+  r["removed_by_hole_points"] = removed_by_holes;
+  r["blocks"] = result.model.blocks.size();
+  r["bodies"] = result.model.bodies.size();
+  r["seconds"] = seconds;
+  return result;
+}
+
+}  // namespace dda::dc
