@@ -19,7 +19,7 @@ void validate_box(const Box3& box, const std::string& what) {
 }
 
 std::vector<Disc> generate_disc_set(const DiscSetSpec& spec, int set, const Box3& domain, double margin,
-                                    Stream& rng) {
+                                    Stream& rng, std::vector<double>* rotations) {
   const std::string where = "Fracture set '" + spec.name + "'";
   validate_box(domain, "The fracture network's domain");
   if (!(margin >= 0) || !std::isfinite(margin))
@@ -32,6 +32,11 @@ std::vector<Disc> generate_disc_set(const DiscSetSpec& spec, int set, const Box3
   if (spec.count > kMaxDiscsPerSet)
     throw InputError(where + " asks for " + std::to_string(spec.count) + " discs, more than the limit of " +
                      std::to_string(kMaxDiscsPerSet) + ".");
+  if (spec.polygon_sides != 0 && (spec.polygon_sides < 3 || spec.polygon_sides > kMaxPolygonSides))
+    throw InputError(where + " has " + std::to_string(spec.polygon_sides) +
+                     " polygon sides; it must be 0 (discs) or from 3 to " + std::to_string(kMaxPolygonSides) + ".");
+  const bool polygons = spec.polygon_sides != 0;
+  if (rotations) rotations->clear();
   const Eigen::Vector3d mean = normal_from_dip(spec.dip_deg, spec.dip_direction_deg);
   if (!(spec.kappa >= 0))
     throw InputError(where + " has Fisher kappa " + format_number(spec.kappa) + "; it must be >= 0 (or infinity).");
@@ -56,6 +61,10 @@ std::vector<Disc> generate_disc_set(const DiscSetSpec& spec, int set, const Box3
     d.normal = upper_hemisphere(sample_fisher(mean, spec.kappa, rng));
     d.radius = spec.size.sample(rng);
     d.set = set;
+    if (polygons) {
+      const double turn = 2 * kPi * rng.uniform01();
+      if (rotations) rotations->push_back(turn);
+    }
     area += kPi * d.radius * d.radius;
     discs.push_back(d);
   }

@@ -19,6 +19,7 @@
 #include <utility>
 #include <vector>
 
+#include "dda/common/geometry3.hpp"
 #include "dda/dl/random.hpp"
 
 namespace dda::dl {
@@ -30,16 +31,9 @@ struct Disc {
   int set = 0;
 };
 
-// Axis-aligned box [lo.x, hi.x] x [lo.y, hi.y] x [lo.z, hi.z].
-struct Box3 {
-  Eigen::Vector3d lo{0, 0, 0};
-  Eigen::Vector3d hi{0, 0, 0};
-  double volume() const { return (hi - lo).prod(); }
-  Box3 grown(double margin) const {
-    const Eigen::Vector3d m = Eigen::Vector3d::Constant(margin);
-    return {lo - m, hi + m};
-  }
-};
+// The domain box is the common dda::Box3 (geometry3.hpp).
+using dda::Box3;
+
 // InputError unless every lo < hi and all are finite; `what` names the box.
 void validate_box(const Box3& box, const std::string& what);
 
@@ -115,7 +109,14 @@ struct DiscSetSpec {
   // Intensity: exactly one of the two. p32 is fracture area per unit volume.
   std::size_t count = 0;
   double p32 = 0;
+  // 0: discs. n >= 3: convex regular n-gons of the same area pi r^2 as the
+  // disc they replace (so count and P32 keep their meaning), each turned about
+  // its normal by a random angle (fractures3d.hpp makes them).
+  int polygon_sides = 0;
 };
+
+// Most sides a polygon set may ask for.
+inline constexpr int kMaxPolygonSides = 1000;
 
 // Most discs one set may have, so that a tiny radius with a large P32 target
 // is an error rather than an exhausted memory.
@@ -132,8 +133,12 @@ inline constexpr std::size_t kMaxDiscsPerSet = 10'000'000;
 // P32 realised inside the domain matches it when the margin is at least the
 // largest radius (SizeLaw::max_radius); a narrower margin misses discs centred
 // farther out that would reach into the domain.
+// A polygon set (polygon_sides >= 3) draws one more number per disc after the
+// radius, the polygon's turn about its normal, 2 pi U radians, stored in
+// `rotations` if given (drawn either way, so a set's discs do not depend on
+// whether the caller keeps the turns). Disc sets draw no turn.
 std::vector<Disc> generate_disc_set(const DiscSetSpec& spec, int set, const Box3& domain, double margin,
-                                    Stream& rng);
+                                    Stream& rng, std::vector<double>* rotations = nullptr);
 
 // All sets, set i from Stream(seed, "dfn3d.set", i), discs in set order.
 std::vector<Disc> generate_dfn(const std::vector<DiscSetSpec>& sets, const Box3& domain, double margin,
