@@ -152,4 +152,26 @@ bool convex_polygons_overlap(const Polygon2& a, const Polygon2& b, double tol) {
   return !separated_by_edges_of(a, b) && !separated_by_edges_of(b, a);
 }
 
+Polygon2 clip_to_convex(const Polygon2& subject, const Polygon2& clip) {
+  Polygon2 out = subject;
+  for (std::size_t i = 0; i < clip.size() && !out.empty(); ++i) {
+    const Vec2 a = clip[i], b = clip[(i + 1) % clip.size()];
+    const Vec2 e = b - a;
+    auto inside = [&](const Vec2& p) { return cross(e, p - a) >= 0; };
+    Polygon2 in = std::move(out);
+    out.clear();
+    for (std::size_t k = 0; k < in.size(); ++k) {
+      const Vec2& p = in[k];
+      const Vec2& q = in[(k + 1) % in.size()];
+      const bool pin = inside(p), qin = inside(q);
+      if (pin) out.push_back(p);
+      if (pin != qin) {
+        const double cp = cross(e, p - a), cq = cross(e, q - a);
+        out.push_back(p + (cp / (cp - cq)) * (q - p));
+      }
+    }
+  }
+  return out;
+}
+
 }  // namespace dda

@@ -54,10 +54,7 @@ void Cell::update_bounds() {
   }
 }
 
-Cell make_box(PlaneTable& table, const Box3& box, int tag) {
-  const ConvexRegion region = box_region(box);
-  int plane[6];
-  for (int i = 0; i < 6; ++i) plane[i] = table.add(region.half_spaces[i].normal, region.half_spaces[i].offset);
+Cell make_box(const PlaneTable& table, const int plane[6], int tag) {
   Cell c;
   // Corner i + 2j + 4k sits on the x-plane i, the y-plane j and the z-plane k.
   for (int k = 0; k < 2; ++k)
@@ -242,7 +239,6 @@ void split(const Cell& c, const PlaneTable& table, int h, const std::vector<std:
   auto build = [&](Cell& out, std::vector<Face>& faces, bool keep_below) {
     std::vector<int> map(all.size(), -1);
     out = Cell{};
-    out.origin = c.origin;
     out.exposed = c.exposed;
     for (int v = 0; v < static_cast<int>(all.size()); ++v) {
       const int s = side(v);

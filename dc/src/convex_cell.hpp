@@ -47,14 +47,13 @@ struct Cell {
   std::vector<Vertex> vertices;
   std::vector<Face> faces;
   Box3 bounds;                  // of the double coordinates
-  int origin = -1;              // cell it was cut from when excavated (-1: none)
   bool exposed = false;         // has lost a part to an excavation
   void update_bounds();
 };
 
-// The box as a cell; its six planes are appended to `table` in the order
-// of box_region (-x, +x, -y, +y, -z, +z), every face tagged `tag`.
-Cell make_box(PlaneTable& table, const Box3& box, int tag);
+// The box as a cell, from the ids of its six planes in the order of
+// box_region (-x, +x, -y, +y, -z, +z; normals outward), every face tagged `tag`.
+Cell make_box(const PlaneTable& table, const int plane[6], int tag);
 
 // Where a cell lies relative to plane h: -1 if no vertex is above it (the
 // cell is on the negative side, possibly touching), +1 if none is below, 0 if

@@ -6,7 +6,6 @@
 
 #include "cut3d_internal.hpp"
 #include "dda/common/error.hpp"
-#include "fracture_extent.hpp"
 
 namespace dda::dc {
 
@@ -61,9 +60,12 @@ bool boxes_meet(const Box3& a, const Box3& b) {
 }
 
 // One fracture against every cell. Returns the number of cells it split;
-// `partial` counts the cells it ends inside of.
-std::size_t cut_with(Work& w, const Fracture3& f, const FractureExtent& extent, std::size_t& partial) {
-  const int h = w.table.add(f.normal, f.offset());
+// `partial` counts the cells it ends inside of, which it splits too when
+// `split_partial` (the parts stay glued into one body) and leaves whole if not.
+std::size_t cut_with(Work& w, std::size_t index, const Fracture3& f, bool split_partial, std::size_t& partial) {
+  const FractureExtent& extent = w.extents[index];
+  const int h = w.add_plane(f.normal, f.offset(), extent.bounded() ? detail3::PlaneRole::Finite : detail3::PlaneRole::Persistent,
+                            static_cast<int>(index));
   std::vector<std::int8_t> sides;
   std::vector<cell::Cell> added;
   std::size_t splits = 0;
@@ -76,7 +78,7 @@ std::size_t cut_with(Work& w, const Fracture3& f, const FractureExtent& extent, 
       if (cov == Coverage::None) continue;
       if (cov == Coverage::Partial) {
         ++partial;
-        continue;
+        if (!split_partial) continue;
       }
     }
     cell::Cell below, above;
@@ -96,47 +98,58 @@ Cut3dResult cut_blocks_3d(const FractureModel& in, const Cut3dOptions& options) 
   check_input(in);
   Work w;
   w.snap = options.snap_tolerance > 0 ? options.snap_tolerance : 1e-9 * (in.domain.hi - in.domain.lo).norm();
-  w.cells.push_back(cell::make_box(w.table, in.domain, kBoundarySet));
+  {
+    const ConvexRegion box = box_region(in.domain);
+    for (int i = 0; i < 6; ++i)
+      w.boundary_planes[i] = w.add_plane(box.half_spaces[i].normal, box.half_spaces[i].offset, detail3::PlaneRole::Boundary);
+    w.cells.push_back(cell::make_box(w.table, w.boundary_planes, kBoundarySet));
+  }
+  for (const Fracture3& f : in.fractures) w.extents.emplace_back(f);
 
   std::vector<std::size_t> persistent, finite;
   for (std::size_t i = 0; i < in.fractures.size(); ++i)
     (in.fractures[i].shape == FractureShape::Plane ? persistent : finite).push_back(i);
 
   std::size_t partial = 0;
-  for (std::size_t i : persistent) w.splits += cut_with(w, in.fractures[i], FractureExtent(in.fractures[i]), partial);
+  for (std::size_t i : persistent) w.splits += cut_with(w, i, in.fractures[i], false, partial);
 
-  // Finite fractures, pass after pass, each time only those that still end
-  // inside some block, until a pass cuts nothing.
-  std::vector<FractureExtent> extents;
-  extents.reserve(finite.size());
-  for (std::size_t i : finite) extents.emplace_back(in.fractures[i]);
-  std::vector<std::size_t> pending(finite.size());
-  for (std::size_t k = 0; k < finite.size(); ++k) pending[k] = k;
   int passes = 0;
-  std::size_t unfinished_fractures = 0, unfinished_cells = 0;
-  while (!pending.empty()) {
-    ++passes;
-    std::vector<std::size_t> still;
-    std::size_t cut_this_pass = 0;
-    unfinished_cells = 0;
-    for (std::size_t k : pending) {
-      std::size_t part = 0;
-      cut_this_pass += cut_with(w, in.fractures[finite[k]], extents[k], part);
-      if (part > 0) still.push_back(k);
-      unfinished_cells += part;
+  std::size_t unfinished_cells = 0, unfinished_through = 0;
+  const bool glue = options.finite_fractures == FiniteFractures::Glue;
+  if (glue) {
+    // Every fracture splits every block its disc or polygon reaches into;
+    // where it ends inside, the parts stay glued (cut3d_bodies.cpp).
+    passes = finite.empty() ? 0 : 1;
+    for (std::size_t i : finite) w.splits += cut_with(w, i, in.fractures[i], true, unfinished_cells);
+  } else {
+    // Pass after pass over the fractures that still end inside some block,
+    // until a pass cuts nothing.
+    std::vector<std::size_t> pending = finite;
+    while (!pending.empty()) {
+      ++passes;
+      std::vector<std::size_t> still;
+      std::size_t cut_this_pass = 0;
+      unfinished_cells = 0;
+      for (std::size_t i : pending) {
+        std::size_t part = 0;
+        cut_this_pass += cut_with(w, i, in.fractures[i], false, part);
+        if (part > 0) still.push_back(i);
+        unfinished_cells += part;
+      }
+      w.splits += cut_this_pass;
+      unfinished_through = still.size();
+      if (cut_this_pass == 0 || still.empty()) break;
+      pending = std::move(still);
     }
-    w.splits += cut_this_pass;
-    unfinished_fractures = still.size();
-    if (cut_this_pass == 0 || still.empty()) break;
-    pending = std::move(still);
   }
   const std::size_t blocks_before_excavation = w.cells.size();
 
   detail3::excavate(w, in.excavations);
 
   Cut3dResult result;
-  std::size_t removed_by_holes = 0;
-  detail3::build_output(w, in, options, result.model, removed_by_holes);
+  std::size_t removed_by_holes = 0, unfinished_fractures = 0;
+  detail3::build_output(w, in, options, result.model, removed_by_holes, unfinished_fractures);
+  if (!glue) unfinished_fractures = unfinished_through;  // they left blocks whole rather than glued
   result.model.unfinished_cuts = static_cast<int>(unfinished_fractures);
 
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -145,9 +158,10 @@ Cut3dResult cut_blocks_3d(const FractureModel& in, const Cut3dOptions& options) 
   r["finite_fractures"] = finite.size();
   r["splits"] = w.splits;
   r["snap_tolerance"] = w.snap;
+  r["finite_fractures_mode"] = glue ? "glue" : "through";
   r["finite_passes"] = passes;
   r["unfinished_fractures"] = unfinished_fractures;
-  r["unfinished_block_crossings"] = unfinished_cells;
+  r["partial_block_crossings"] = unfinished_cells;
   r["blocks_before_excavation"] = blocks_before_excavation;
   r["excavated_volume"] = w.excavated_volume;
   r["removed_by_hole_points"] = removed_by_holes;

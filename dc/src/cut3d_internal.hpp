@@ -2,7 +2,8 @@
 // Stages of the 3D cutter (plain interfaces; only exact_plane_cgal.cpp sees CGAL).
 //
 //   cut3d.cpp            orchestration, input checks, persistent and finite fractures
-//   cut3d_excavate.cpp   excavations, glued pieces -> bodies, hole points
+//   cut3d_excavate.cpp   excavations
+//   cut3d_bodies.cpp     glued parts -> bodies
 //   cut3d_output.cpp     cells -> Polyhedra, bodies, removability, report
 //   convex_cell.cpp      the plane-based convex cell and its split
 //   fracture_extent.cpp  does a finite fracture reach through a block
@@ -11,14 +12,26 @@
 #include <vector>
 
 #include "convex_cell.hpp"
+#include "fracture_extent.hpp"
 #include "dda/common/fracture_model.hpp"
 #include "dda/common/polyhedron_model.hpp"
 #include "dda/dc/cut3d.hpp"
 
 namespace dda::dc::detail3 {
 
+// What a plane of the table is, for deciding which faces glue parts together.
+enum class PlaneRole : std::uint8_t { Boundary, Persistent, Finite, Excavation };
+
 struct Work {
   cell::PlaneTable table;
+  std::vector<PlaneRole> role;           // per plane
+  std::vector<int> plane_fracture;       // per plane: input fracture index, or -1
+  std::vector<FractureExtent> extents;   // per input fracture
+  int add_plane(const Vec3& normal, double offset, PlaneRole r, int fracture = -1) {
+    role.push_back(r);
+    plane_fracture.push_back(fracture);
+    return table.add(normal, offset);
+  }
   std::vector<cell::Cell> cells;
   int boundary_planes[6] = {0, 1, 2, 3, 4, 5};  // -x +x -y +y -z +z
   double snap = 0;  // m: vertices this close to a cutting plane count as on it
@@ -34,18 +47,23 @@ int classify(const Work& w, const cell::Cell& c, int h, std::vector<std::int8_t>
 void split(const Work& w, const cell::Cell& c, int h, std::vector<std::int8_t>& sides, int cap_tag,
            cell::Cell& below, cell::Cell& above);
 
-// Removes what lies inside each excavation; pieces of a block partly inside
-// get a common `origin` and kArtificialSet faces where they stay glued.
+// Removes what lies inside each excavation; a block partly inside leaves
+// its outside parts, flagged exposed, with kArtificialSet faces where they
+// touch each other.
 void excavate(Work& w, const std::vector<Excavation3>& excavations);
 
-// Union of glued pieces (same origin, overlapping opposite faces on one
-// plane): the body index of every cell, bodies numbered from 0.
-std::vector<int> glue_bodies(const Work& w, int& body_count);
+// Bodies: parts are glued where opposite faces on one plane overlap and the
+// plane is an excavation's (artificial) or a finite fracture that does not
+// cover the whole overlap. Returns the body of every cell (numbered from 0);
+// `glued_fractures` counts the finite fractures that glue somewhere (they
+// end inside a body).
+std::vector<int> glue_bodies(const Work& w, int& body_count, std::size_t& glued_fractures);
 
 // Builds the output blocks and bodies (moments, layers, removability) and
 // removes the bodies that contain hole points.
+// `unfinished_fractures`: finite fractures that end inside a body.
 void build_output(Work& w, const FractureModel& in, const Cut3dOptions& options, PolyhedronModel& out,
-                  std::size_t& removed_by_holes);
+                  std::size_t& removed_by_holes, std::size_t& unfinished_fractures);
 
 // 0..5 for "x-", "x+", "y-", "y+", "z-", "z+"; -1 for anything else.
 int boundary_index(const std::string& name);

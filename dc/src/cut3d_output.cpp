@@ -48,7 +48,7 @@ Polyhedron to_polyhedron(const cell::Cell& c, const cell::PlaneTable& t) {
 }  // namespace
 
 void build_output(Work& w, const FractureModel& in, const Cut3dOptions& options, PolyhedronModel& out,
-                  std::size_t& removed_by_holes) {
+                  std::size_t& removed_by_holes, std::size_t& unfinished_fractures) {
   bool free_plane[6] = {false, false, false, false, false, false};
   for (const auto& name : options.free_boundaries) {
     const int i = boundary_index(name);
@@ -62,7 +62,7 @@ void build_output(Work& w, const FractureModel& in, const Cut3dOptions& options,
   };
 
   int body_count = 0;
-  std::vector<int> body = glue_bodies(w, body_count);
+  std::vector<int> body = glue_bodies(w, body_count, unfinished_fractures);
 
   // Hole points remove the body they fall in.
   std::vector<bool> body_removed(static_cast<std::size_t>(body_count), false);
@@ -133,7 +133,10 @@ namespace dda::dc {
 Cut3dOptions parse_cut3d_options(const std::optional<YamlNode>& cutting) {
   Cut3dOptions o;
   if (!cutting) return o;
-  cutting->allow({"free_boundaries", "gravity_direction", "snap_tolerance"});
+  cutting->allow({"free_boundaries", "gravity_direction", "snap_tolerance", "finite_fractures"});
+  o.finite_fractures = cutting->choice("finite_fractures", {"glue", "through"}, "glue") == "glue"
+                           ? FiniteFractures::Glue
+                           : FiniteFractures::Through;
   o.snap_tolerance = cutting->number("snap_tolerance", 0.0, Range::non_negative());
   if (cutting->has("free_boundaries")) {
     o.free_boundaries.clear();

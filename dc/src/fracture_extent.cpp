@@ -54,6 +54,14 @@ FractureExtent::FractureExtent(const Fracture3& f) {
   tol_ = 1e-9 * (bounds_.hi - bounds_.lo).norm();
 }
 
+bool FractureExtent::covers(const Polygon2& poly) const {
+  if (!bounded_) return true;
+  for (const Vec2& p : poly) {
+    if (disc_ ? p.norm() > radius_ + tol_ : distance_to_convex(polygon_, p) > tol_) return false;
+  }
+  return true;
+}
+
 Coverage FractureExtent::coverage(const std::vector<Vec3>& section) const {
   if (!bounded_) return Coverage::Full;
   Polygon2 pts;

@@ -24,8 +24,13 @@ class FractureExtent {
   // polygon's vertices, any order).
   Coverage coverage(const std::vector<Vec3>& section) const;
 
- private:
+  // Coordinates in the fracture's plane (origin at its centre).
   Vec2 in_plane(const Vec3& p) const { return {(p - origin_).dot(e1_), (p - origin_).dot(e2_)}; }
+  // Whether every point of `poly` (in-plane coordinates) lies on the
+  // fracture, within a rounding tolerance; always true for a plane.
+  bool covers(const Polygon2& poly) const;
+
+ private:
   bool bounded_ = false;
   bool disc_ = false;
   Vec3 origin_, e1_, e2_;

@@ -6,6 +6,7 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <algorithm>
 #include <random>
 
 #include "dc3d_test_util.hpp"
@@ -122,34 +123,78 @@ TEST(Cut3d, RandomPlanesConserveVolume) {
   EXPECT_GT(r.model.blocks.size(), 500u);
 }
 
-TEST(Cut3d, DiscCutsOnlyWhereItReachesThrough) {
+Cut3dOptions through_only() {
+  Cut3dOptions o;
+  o.finite_fractures = FiniteFractures::Through;
+  return o;
+}
+
+std::vector<double> body_volumes(const PolyhedronModel& m) {
+  std::vector<double> v;
+  for (const auto& b : m.bodies) v.push_back(b.volume);
+  std::sort(v.begin(), v.end());
+  return v;
+}
+
+TEST(Cut3d, DiscThatEndsInsideABlockLeavesItOneBody) {
   FractureModel m = empty_model(Vec3(0, 0, 0), Vec3(2, 1, 1), 2);
   // A disc in z = 0.5 of radius 0.8 about (0.5, 0.5): it covers the section
   // of [0, 1] x [0, 1] (corners 0.71 from its centre) but not of the box.
   m.fractures.push_back(disc(Vec3::UnitZ(), Vec3(0.5, 0.5, 0.5), 0.8, 0));
   {
-    const auto r = cut_blocks_3d(m);
+    // through: the box stays one convex block.
+    const auto r = cut_blocks_3d(m, through_only());
     EXPECT_EQ(r.model.blocks.size(), 1u);
+    EXPECT_EQ(r.model.unfinished_cuts, 1);
+  }
+  {
+    // glue: two convex parts of one body.
+    const auto r = cut_blocks_3d(m);
+    EXPECT_EQ(r.model.blocks.size(), 2u);
+    ASSERT_EQ(r.model.bodies.size(), 1u);
+    EXPECT_NEAR(r.model.bodies[0].volume, 2, 1e-12);
     EXPECT_EQ(r.model.unfinished_cuts, 1);
   }
   // A disc in x = 1 of radius 1 about the section's centre covers it (corners
   // 0.71 away): it halves the box, and then the first disc reaches through
-  // the left half. Either order gives the same three blocks.
+  // the left half. Either order, either way, gives the same three bodies:
+  // 0.5 + 0.5 on the left, 1 on the right (where the first disc ends 0.3 m in).
   const Fracture3 splitter = disc(Vec3::UnitX(), Vec3(1, 0.5, 0.5), 1.0, 1);
-  for (int order = 0; order < 2; ++order) {
-    FractureModel mm = m;
-    if (order == 0) mm.fractures.push_back(splitter);
-    else mm.fractures.insert(mm.fractures.begin(), splitter);
-    const auto r = cut_blocks_3d(mm);
-    ASSERT_EQ(r.model.blocks.size(), 3u) << "order " << order;
-    EXPECT_EQ(r.model.unfinished_cuts, 1);  // the first disc reaches 0.3 m into the right half
-    std::vector<double> v;
-    for (const auto& b : r.model.blocks) v.push_back(b.volume);
-    std::sort(v.begin(), v.end());
-    EXPECT_NEAR(v[0], 0.5, 1e-12);
-    EXPECT_NEAR(v[1], 0.5, 1e-12);
-    EXPECT_NEAR(v[2], 1.0, 1e-12);
-  }
+  for (int mode = 0; mode < 2; ++mode)
+    for (int order = 0; order < 2; ++order) {
+      FractureModel mm = m;
+      if (order == 0) mm.fractures.push_back(splitter);
+      else mm.fractures.insert(mm.fractures.begin(), splitter);
+      const auto r = cut_blocks_3d(mm, mode == 0 ? Cut3dOptions{} : through_only());
+      const auto v = body_volumes(r.model);
+      ASSERT_EQ(v.size(), 3u) << "mode " << mode << " order " << order;
+      EXPECT_NEAR(v[0], 0.5, 1e-12);
+      EXPECT_NEAR(v[1], 0.5, 1e-12);
+      EXPECT_NEAR(v[2], 1.0, 1e-12);
+      EXPECT_EQ(r.model.unfinished_cuts, 1);
+      for (const auto& b : r.model.blocks) expect_valid(b);
+    }
+}
+
+TEST(Cut3d, IntersectingFiniteDiscsTogetherIsolateACornerBlock) {
+  // Three discs of radius 0.8 in the planes x = 1, y = 1 and z = 1 of a
+  // 2 m cube, each centred on the face its plane shares with the corner cube
+  // [0, 1]^3: each covers that face (corners 0.71 away) and ends inside the
+  // rest of the cube. Together they cut the corner cube out: bodies of 1 and
+  // 7 m^3. No single disc reaches through the cube, so `through` cuts
+  // nothing.
+  FractureModel m = empty_model(Vec3(0, 0, 0), Vec3(2, 2, 2), 1);
+  m.fractures.push_back(disc(Vec3::UnitX(), Vec3(1, 0.5, 0.5), 0.8));
+  m.fractures.push_back(disc(Vec3::UnitY(), Vec3(0.5, 1, 0.5), 0.8));
+  m.fractures.push_back(disc(Vec3::UnitZ(), Vec3(0.5, 0.5, 1), 0.8));
+  const auto r = cut_blocks_3d(m);
+  for (const auto& b : r.model.blocks) expect_valid(b);
+  const auto v = body_volumes(r.model);
+  ASSERT_EQ(v.size(), 2u);
+  EXPECT_NEAR(v[0], 1, 1e-12);
+  EXPECT_NEAR(v[1], 7, 1e-12);
+  EXPECT_EQ(r.model.unfinished_cuts, 3);
+  EXPECT_EQ(cut_blocks_3d(m, through_only()).model.blocks.size(), 1u);
 }
 
 TEST(Cut3d, DiscMissingTheBlockIsNotCounted) {
@@ -167,11 +212,12 @@ TEST(Cut3d, PolygonFractureCutsWhenItCoversTheSection) {
   f.vertices = {Vec3(-0.1, -0.1, 0.3), Vec3(1.2, -0.1, 0.3), Vec3(1.2, 1.1, 0.3), Vec3(-0.1, 1.1, 0.3)};
   m.fractures.push_back(f);
   auto r = cut_blocks_3d(m);
-  ASSERT_EQ(r.model.blocks.size(), 2u);
+  ASSERT_EQ(r.model.bodies.size(), 2u);
   m.fractures[0].vertices[2] = Vec3(0.9, 1.1, 0.3);  // now it misses the corner (1, 1)
   r = cut_blocks_3d(m);
-  EXPECT_EQ(r.model.blocks.size(), 1u);
+  EXPECT_EQ(r.model.bodies.size(), 1u);
   EXPECT_EQ(r.model.unfinished_cuts, 1);
+  EXPECT_EQ(cut_blocks_3d(m, through_only()).model.blocks.size(), 1u);
 }
 
 Excavation3 square_tunnel_along_y(double x0, double x1, double z0, double z1) {

@@ -54,6 +54,10 @@ double extent_along(const Polygon2& poly, const Vec2& dir);
 // edge) counts as apart.
 bool convex_polygons_overlap(const Polygon2& a, const Polygon2& b, double tol);
 
+// The part of `subject` inside the convex counter-clockwise polygon `clip`
+// (Sutherland-Hodgman); empty if they do not overlap.
+Polygon2 clip_to_convex(const Polygon2& subject, const Polygon2& clip);
+
 // Convex hull, counter-clockwise, without collinear points.
 Polygon2 convex_hull(Polygon2 points);
 

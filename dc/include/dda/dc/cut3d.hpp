@@ -6,14 +6,18 @@
 // The order of work, and why:
 //  1. Persistent planes (shape Plane, e.g. persistent sets, bed boundaries)
 //     cut every block they cross.
-//  2. Finite fractures (discs, polygons) cut a block only where they reach
-//     right through it: every point of the block's section by the fracture
-//     plane lies on the fracture. A fracture that ends inside a block leaves
-//     it whole (that block stays convex; the fracture is counted in
-//     `unfinished_cuts`). Since a cut by one fracture can make a smaller
-//     block that another fracture then crosses completely, finite fractures
-//     are passed over again until a pass cuts nothing, so the result does
-//     not depend on the order of the fractures.
+//  2. Finite fractures (discs, polygons) separate rock only where they
+//     reach right through it. Two ways (Cut3dOptions::finite_fractures):
+//     - glue (default): a fracture splits every block its disc or polygon
+//       reaches into; where it ends inside, the two parts stay glued as one
+//       non-convex body. A body is separated once fractures (together) cut
+//       it through, so intersecting finite fractures make blocks.
+//     - through: a fracture cuts a block only if the block's whole section
+//       lies on it, else leaves the block whole; passes repeat until
+//       nothing changes, so the order of the fractures does not matter.
+//       Every block is then convex, but a network of fractures smaller than
+//       the blocks cuts nothing.
+//     Fractures that end inside a body are counted in `unfinished_cuts`.
 //  3. Excavations (convex regions) remove what lies inside them. A block
 //     partly inside keeps the parts outside as convex pieces glued along
 //     kArtificialSet faces: one body, flagged exposed.
@@ -30,7 +34,10 @@
 
 namespace dda::dc {
 
+enum class FiniteFractures { Glue, Through };
+
 struct Cut3dOptions {
+  FiniteFractures finite_fractures = FiniteFractures::Glue;
   // Faces of the domain box that are free surfaces rather than rock that
   // goes on beyond the model, by name: "x-", "x+", "y-", "y+", "z-", "z+".
   // Default: the ground surface "z+".
