@@ -1,6 +1,9 @@
 #include "dda/dc/removability.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <utility>
 
 namespace dda::dc {
 
@@ -12,12 +15,34 @@ bool admissible(const Vec3& d, const std::vector<Vec3>& normals, double tol) {
   return true;
 }
 
+// The distinct normals (to 1e-9): a body of many parts has many faces on the
+// same few planes, and the tests below are cubic in the number of normals.
+std::vector<Vec3> distinct(const std::vector<Vec3>& normals, std::vector<int>& first_index) {
+  std::vector<std::pair<std::array<long long, 3>, int>> keyed;
+  keyed.reserve(normals.size());
+  for (std::size_t i = 0; i < normals.size(); ++i)
+    keyed.push_back({{std::llround(normals[i].x() * 1e9), std::llround(normals[i].y() * 1e9),
+                      std::llround(normals[i].z() * 1e9)},
+                     static_cast<int>(i)});
+  std::sort(keyed.begin(), keyed.end());
+  std::vector<Vec3> out;
+  first_index.clear();
+  for (std::size_t i = 0; i < keyed.size(); ++i) {
+    if (i > 0 && keyed[i].first == keyed[i - 1].first) continue;
+    out.push_back(normals[static_cast<std::size_t>(keyed[i].second)]);
+    first_index.push_back(keyed[i].second);
+  }
+  return out;
+}
+
 }  // namespace
 
-RemovabilityResult classify_removability(const std::vector<Vec3>& normals, bool exposed, const Vec3& gravity,
+RemovabilityResult classify_removability(const std::vector<Vec3>& all_normals, bool exposed, const Vec3& gravity,
                                          double tol) {
   RemovabilityResult r;
   if (!exposed) return r;
+  std::vector<int> index;
+  const std::vector<Vec3> normals = distinct(all_normals, index);
   const Vec3 g = gravity.normalized();
 
   // Lifting: gravity opens every contact.
@@ -38,7 +63,7 @@ RemovabilityResult classify_removability(const std::vector<Vec3>& normals, bool 
       best = drive;
       r.mode = Removability::SlidesOne;
       r.direction = s;
-      r.sliding_faces = {static_cast<int>(i)};
+      r.sliding_faces = {index[i]};
     }
   }
   if (r.mode == Removability::SlidesOne) return r;
@@ -55,7 +80,7 @@ RemovabilityResult classify_removability(const std::vector<Vec3>& normals, bool 
         best = s.dot(g);
         r.mode = Removability::SlidesTwo;
         r.direction = s;
-        r.sliding_faces = {static_cast<int>(i), static_cast<int>(j)};
+        r.sliding_faces = {index[i], index[j]};
       }
     }
   if (r.mode == Removability::SlidesTwo) return r;

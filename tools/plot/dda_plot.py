@@ -28,6 +28,9 @@ T (s) -- the response spectra PSA and SA above and SD below against the
 period, log period axis. --labels names the spectra (the signal, the
 reference).
 
+3D files (a fractures file from `dda dl`, a 3D blocks file from `dda dc`)
+are drawn in a 3D view; see dda_plot3d.py for --color, --explode, --view.
+
 Needs numpy, h5py and matplotlib (Debian: python3-h5py, python3-matplotlib);
 runs headless (Agg). Any problem is one line on stderr and exit status 2.
 """
@@ -421,6 +424,51 @@ def plot_spectra(path, labels):
     return fig
 
 
+# ----------------------------------------------------------------- 3D
+THREE_D = ("dda-fractures", "dda-blocks3d")
+
+
+def file_format(path):
+    """The dda format attribute of an HDF5 file, after the checks every file gets."""
+    if not os.path.exists(path):
+        fail(f"{path}: file not found")
+    if os.path.isdir(path):
+        fail(f"{path}: is a folder, not a file")
+    try:
+        if not h5py.is_hdf5(path):
+            fail(f"{path}: is not an HDF5 file")
+        with h5py.File(path, "r") as f:
+            return text(f.attrs.get("format", ""))
+    except OSError as exc:
+        fail(f"{path}: cannot read the file ({exc.strerror or exc})")
+
+
+def plot_3d(paths, formats, labels, a):
+    import dda_plot3d as p3
+
+    n = len(paths)
+    cols = min(n, 2)
+    rows = (n + cols - 1) // cols
+    fig = plt.figure(figsize=(7.5 * cols, 6.0 * rows))
+    for k, (path, fm, label) in enumerate(zip(paths, formats, labels)):
+        ax = fig.add_subplot(rows, cols, k + 1, projection="3d")
+        try:
+            with h5py.File(path, "r") as f:
+                def arr(name, shape_tail=(), dtype=float):
+                    if name in f:
+                        return np.asarray(f[name][()], dtype=dtype)
+                    return np.zeros((0,) + shape_tail, dtype=dtype)
+                set_names = [text(s) for s in f["sets/name"][()]] if "sets/name" in f else []
+                m = p3.read_fractures(f, arr) if fm == "dda-fractures" else p3.read_blocks3d(f, arr)
+        except (OSError, KeyError, ValueError, TypeError) as exc:
+            fail(f"{path}: cannot read it as a {fm} file ({exc})")
+        if fm == "dda-fractures":
+            p3.draw_fractures(ax, m, set_names, set_colours(len(set_names)), a.view, label)
+        else:
+            p3.draw_blocks3d(ax, m, a.color, a.explode, a.view, label)
+    return fig
+
+
 # -------------------------------------------------------------------- main
 
 
@@ -457,6 +505,12 @@ def main(argv=None):
     p.add_argument("--fraction", action="store_true",
                    help="histograms: fraction of each file's blocks instead of counts")
     p.add_argument("--no-names", action="store_true", help="do not write point names")
+    p.add_argument("--color", choices=["removability", "body", "layer"], default="removability",
+                   help="3D blocks: colour bodies by block-theory mode (default), at random, or by bed")
+    p.add_argument("--explode", type=float, default=0.0, metavar="F",
+                   help="3D blocks: move bodies apart by F times their offset from the centre")
+    p.add_argument("--view", type=float, nargs=2, default=[25.0, -60.0], metavar=("ELEV", "AZIM"),
+                   help="3D: camera elevation and azimuth, degrees (default 25 -60)")
     a = p.parse_args(argv)
 
     ext = os.path.splitext(a.output)[1].lower()
@@ -487,6 +541,17 @@ def main(argv=None):
         fail(f"--bins must be at least 1, got {a.bins}")
     labels = a.labels or [os.path.basename(f) for f in a.files]
 
+    formats = [file_format(f) for f in a.files]
+    if any(fm in THREE_D for fm in formats):
+        if not all(fm in THREE_D for fm in formats):
+            fail("3D files (fractures, 3D blocks) cannot be drawn together with 2D lines or blocks files")
+        if a.kind not in ("auto", "blocks"):
+            fail(f"--kind {a.kind} is for 2D files; 3D files are drawn with --kind auto")
+        fig = plot_3d(a.files, formats, labels, a)
+        if a.title:
+            fig.suptitle(a.title)
+        save_atomically(fig, a.output)
+        return 0
     models = [Model(f) for f in a.files]
     if a.kind == "histograms":
         fig = plot_histograms(models, labels, a.bins, a.fraction)

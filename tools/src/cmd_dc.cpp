@@ -1,25 +1,53 @@
-// dda dc lines.h5 -o blocks.h5
+// dda dc lines.h5 -o blocks.h5       (2D)
+// dda dc fractures.h5 -o blocks3d.h5  (3D)
 #include "commands.hpp"
+#include "dda/common/error.hpp"
 #include "dda/common/model_io.hpp"
+#include "dda/common/model_io3.hpp"
 #include "dda/common/vtk.hpp"
+#include "dda/common/vtk3d.hpp"
 #include "dda/dc/cut.hpp"
+#include "dda/dc/cut3d.hpp"
 #include "pipeline.hpp"
+#include "pipeline3d.hpp"
 
 namespace dda::cli {
 
 void add_dc_command(CLI::App& app, const GlobalOptions& global) {
   struct Options {
-    std::string input, output, vtk, report;
+    std::string input, output, vtk, report, finite;
     SliverOverrides slivers;
   };
   auto opt = std::make_shared<Options>();
-  CLI::App* cmd = app.add_subcommand("dc", "Cut the lines of a lines file into blocks");
-  cmd->add_option("lines", opt->input, "Lines file written by `dda dl`")->required();
+  CLI::App* cmd = app.add_subcommand(
+      "dc", "Cut the lines of a lines file into blocks (2D), or the fractures of a fractures file into polyhedra (3D)");
+  cmd->add_option("lines", opt->input, "Lines or fractures file written by `dda dl`")->required();
   cmd->add_option("-o,--output", opt->output, "Blocks file to write (HDF5)")->required();
   cmd->add_option("--vtk", opt->vtk, "Also write the blocks for ParaView (.vtu)");
   cmd->add_option("--report", opt->report, "Write the cutting report as JSON");
   add_sliver_options(cmd, opt->slivers);
+  cmd->add_option("--finite-fractures", opt->finite,
+                  "3D: glue (a fracture that ends inside a body splits it into glued parts) or through "
+                  "(it leaves the block whole)")
+      ->check(CLI::IsMember({"glue", "through"}));
   cmd->callback([opt, &global] {
+    if (h5_format_of(opt->input) == "dda-fractures") {
+      if (opt->slivers.min_area || opt->slivers.max_aspect || opt->slivers.action)
+        throw InputError("--min-area, --max-aspect and --slivers apply to 2D cuts; " + opt->input +
+                         " is a 3D fractures file.");
+      const FractureModel fractures = read_fractures_h5(opt->input);
+      dc::Cut3dOptions options = cut3d_options_of(fractures);
+      if (!opt->finite.empty())
+        options.finite_fractures = opt->finite == "glue" ? dc::FiniteFractures::Glue : dc::FiniteFractures::Through;
+      const dc::Cut3dResult cut = dc::cut_blocks_3d(fractures, options);
+      write_polyhedra_h5(opt->output, cut.model);
+      if (!opt->vtk.empty()) write_polyhedra_vtu(opt->vtk, cut.model);
+      if (!opt->report.empty()) write_json(opt->report, cut.report);
+      say(global.quiet, describe_cut3d(cut.model, opt->output));
+      return;
+    }
+    if (!opt->finite.empty())
+      throw InputError("--finite-fractures applies to 3D cuts; " + opt->input + " is not a fractures file.");
     const LineModel lines = read_lines_h5(opt->input);
     dc::CutOptions options = cut_options_of(lines);
     apply(opt->slivers, options);

@@ -4,6 +4,7 @@
 #include "commands.hpp"
 #include "dda/common/error.hpp"
 #include "dda/common/model_io.hpp"
+#include "dda/common/model_io3.hpp"
 #include "dda/df/results.hpp"
 
 namespace dda::cli {
@@ -20,7 +21,7 @@ void print_provenance(const Provenance& p) {
 void add_info_command(CLI::App& app, const GlobalOptions&) {
   auto input = std::make_shared<std::string>();
   auto show_scenario = std::make_shared<bool>(false);
-  CLI::App* cmd = app.add_subcommand("info", "Describe a lines, blocks or results file: what it holds and what made it");
+  CLI::App* cmd = app.add_subcommand("info", "Describe a lines, blocks, fractures, 3D blocks or results file: what it holds and what made it");
   cmd->add_option("file", *input, "File written by dda")->required();
   cmd->add_flag("--scenario", *show_scenario, "Print the scenario text stored in the file");
   cmd->callback([input, show_scenario] {
@@ -35,6 +36,19 @@ void add_info_command(CLI::App& app, const GlobalOptions&) {
     } else if (format == "dda-blocks") {
       const BlockModel m = read_blocks_h5(*input);
       std::cout << *input << ": dda-blocks, " << m.blocks.size() << " blocks, " << m.points.size() << " points\n";
+      print_provenance(m.provenance);
+      if (*show_scenario) std::cout << "\n" << m.provenance.scenario_text;
+    } else if (format == "dda-fractures") {
+      const FractureModel m = read_fractures_h5(*input);
+      std::cout << *input << ": dda-fractures, " << m.fractures.size() << " fractures in " << m.sets.size()
+                << " sets, " << m.excavations.size() << " excavations, " << m.points.size() << " points, "
+                << m.layers.size() << " layers\n";
+      print_provenance(m.provenance);
+      if (*show_scenario) std::cout << "\n" << m.provenance.scenario_text;
+    } else if (format == "dda-blocks3d") {
+      const PolyhedronModel m = read_polyhedra_h5(*input);
+      std::cout << *input << ": dda-blocks3d, " << m.bodies.size() << " bodies (" << m.blocks.size()
+                << " convex parts), " << m.points.size() << " points\n";
       print_provenance(m.provenance);
       if (*show_scenario) std::cout << "\n" << m.provenance.scenario_text;
     } else if (format == "dda-results") {

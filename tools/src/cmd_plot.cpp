@@ -14,8 +14,8 @@ void add_plot_command(CLI::App& app, const GlobalOptions& global) {
   };
   auto opt = std::make_shared<Options>();
   CLI::App* cmd = app.add_subcommand(
-      "plot", "Draw lines or blocks (PNG/SVG), or block width and area histograms of one or more blocks files");
-  cmd->add_option("files", opt->inputs, "Lines or blocks files (HDF5)")->required();
+      "plot", "Draw lines, blocks, fractures or 3D blocks (PNG/SVG), or block width and area histograms of blocks files");
+  cmd->add_option("files", opt->inputs, "Lines, blocks, fractures or 3D blocks files (HDF5)")->required();
   cmd->add_option("-o,--output", opt->output, "Figure to write; .png or .svg")->required();
   cmd->add_option("--kind", opt->kind, "auto (from the file), lines, blocks or histograms")
       ->check(CLI::IsMember({"auto", "lines", "blocks", "histograms"}));
@@ -23,7 +23,7 @@ void add_plot_command(CLI::App& app, const GlobalOptions& global) {
   cmd->add_option("--title", opt->title, "Figure title");
   cmd->callback([opt, &global] {
     for (const auto& f : opt->inputs)
-      if (h5_format_of(f).empty()) throw InputError(f + ": is not a lines or blocks file written by dda.");
+      if (h5_format_of(f).empty()) throw InputError(f + ": is not a file written by dda (lines, blocks, fractures or 3D blocks).");
     if (!opt->labels.empty() && opt->labels.size() != opt->inputs.size())
       throw InputError("--labels: give one label per file (" + std::to_string(opt->inputs.size()) + "), got " +
                        std::to_string(opt->labels.size()) + ".");

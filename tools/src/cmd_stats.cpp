@@ -5,8 +5,11 @@
 
 #include "commands.hpp"
 #include "dda/common/model_io.hpp"
+#include "dda/common/model_io3.hpp"
 #include "dda/dc/stats.hpp"
+#include "dda/dc/stats3d.hpp"
 #include "pipeline.hpp"
+#include "pipeline3d.hpp"
 
 namespace dda::cli {
 
@@ -50,19 +53,20 @@ void add_stats_command(CLI::App& app, const GlobalOptions& global) {
     int bins = 20;
   };
   auto opt = std::make_shared<Options>();
-  CLI::App* cmd = app.add_subcommand("stats", "Block statistics: count, area, width and per-layer distributions");
-  cmd->add_option("blocks", opt->input, "Blocks file written by `dda dc`")->required();
+  CLI::App* cmd = app.add_subcommand("stats", "Block statistics: count, area (volume), width (size, aspect), per-layer distributions; 3D: block theory");
+  cmd->add_option("blocks", opt->input, "Blocks file (2D or 3D) written by `dda dc`")->required();
   cmd->add_flag("--json", opt->json, "Print JSON (keys: blocks, total_area, area{...}, width{...}, ...)");
   cmd->add_option("--bins", opt->bins, "Histogram bins")->check(CLI::Range(1, 10000));
   cmd->add_option("-o,--output", opt->output, "Also write the JSON to this file");
   cmd->callback([opt, &global] {
-    const BlockModel blocks = read_blocks_h5(opt->input);
-    const nlohmann::json st = dc::block_statistics(blocks, opt->bins);
+    const bool three_d = h5_format_of(opt->input) == "dda-blocks3d";
+    const nlohmann::json st = three_d ? dc::block_statistics_3d(read_polyhedra_h5(opt->input), opt->bins)
+                                      : dc::block_statistics(read_blocks_h5(opt->input), opt->bins);
     if (!opt->output.empty()) write_json(opt->output, st);
     if (opt->json)
       std::cout << st.dump(2) << "\n";
     else
-      say(global.quiet, format_statistics(st));
+      say(global.quiet, three_d ? format_statistics_3d(st) : format_statistics(st));
   });
 }
 
