@@ -9,13 +9,52 @@ const std::vector<std::string>& scenario_sections() {
       "name",       "description", "seed",     "domain",   "joint_sets", "layering",
       "excavations", "lines",      "traces",   "geometry", "points",     "cutting",
       "materials",  "joints",      "loading",  "fixed",    "bolts",      "boundaries",
-      "control",    "output"};
+      "control",    "output",
+      // 3D (dimension: 3)
+      "dimension", "fracture_sets", "persistent_sets", "planes", "fracture_files", "trace_planes"};
   return sections;
 }
+
+namespace {
+
+// Sections that only one dimension reads. A section of the other dimension
+// would be silently ignored, so it is an error naming it (with the section
+// that does the job, where there is one). The forward run and `output` are
+// 2D only until DF has a 3D half.
+struct OtherDimension {
+  const char* key;
+  const char* instead;  // "" if none
+};
+const OtherDimension kOnly2d[] = {
+    {"joint_sets", "fracture_sets"}, {"lines", "planes"},   {"traces", "fracture_files"}, {"geometry", ""},
+    {"materials", ""},               {"joints", ""},        {"loading", ""},              {"fixed", ""},
+    {"bolts", ""},                   {"boundaries", ""},    {"control", ""},              {"output", ""}};
+const char* const kOnly3d[] = {"fracture_sets", "persistent_sets", "planes", "fracture_files", "trace_planes"};
+
+void check_dimension(const YamlNode& root) {
+  int dimension = 2;
+  if (const auto node = root.optional_child("dimension")) {
+    const long long d = node->as_integer();
+    if (d != 2 && d != 3) node->fail("must be 2 or 3, got " + std::to_string(d));
+    dimension = static_cast<int>(d);
+  }
+  if (dimension == 3) {
+    for (const OtherDimension& o : kOnly2d)
+      if (root.has(o.key))
+        root.fail_key(o.key, std::string("is a 2D section, not read with dimension: 3") +
+                                 (*o.instead ? std::string(" (in 3D, use ") + o.instead + ")" : std::string()));
+  } else {
+    for (const char* key : kOnly3d)
+      if (root.has(key)) root.fail_key(key, "is a 3D section; add dimension: 3 at the top level to use it");
+  }
+}
+
+}  // namespace
 
 YamlNode load_scenario(const std::string& path) {
   YamlNode root = YamlNode::load_file(path);
   root.allow(scenario_sections());
+  check_dimension(root);
   return root;
 }
 

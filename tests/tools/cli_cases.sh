@@ -406,5 +406,70 @@ PY
   expect_error 1 "bad.ana:[0-9]+: <Maxtimestep> needs maxtimestep > 0, got 0\.$" -- "$DDA" df bad.ana --blocks blocks.h5 -o x.h5
 }
 
+# 3D: a small scenario (tests/data/s3d_small.yaml), copied with the CSV
+# polygons it reads (paths in a scenario are relative to it).
+copy_s3d() { cp "$SRC/tests/data/s3d_small.yaml" "$SRC/tests/data/dl3_polygons.csv" . || fail "copy the 3D fixture"; }
+
+case_dl3_fractures_and_report() {
+  copy_s3d
+  "$DDA" dl s3d_small.yaml -o fr.h5 --vtk fr.vtu --report r.json > out.txt || fail "dl of a 3D scenario"
+  for f in fr.h5 fr.vtu r.json fr.mid.lines.h5 fr.mid.lines.vtu; do [ -s "$f" ] || fail "$f missing"; done
+  grep -q "DL report, 3D (seed 11)" out.txt || fail "no 3D report printed"
+  grep -qE "^[0-9]+ fractures written to fr.h5$" out.txt || fail "no fracture count printed"
+  grep -qE "^trace plane mid: [0-9]+ lines written to fr.mid.lines.h5$" out.txt || fail "no section printed"
+  json_get r.json "d['dimension'] == 3 and [s['name'] for s in d['sets']][:4] == ['F1', 'F2', 'S1', 'fault']" \
+    | grep -q True || fail "sets not in the documented order"
+  json_get r.json "d['totals']['fractures'] > 0 and all(s['p32'] > 0 for s in d['sets'][:4])" | grep -q True \
+    || fail "no fractures measured"
+  "$DDA" info fr.mid.lines.h5 | grep -q "seed: *11" || fail "the section lost the fractures' provenance"
+  "$DDA" dl s3d_small.yaml -o again.h5 --report r2.json -q || fail "second run"
+  cmp -s r.json r2.json || fail "the same seed gave another report"
+  ls -a | grep -q '\.tmp' && fail "temporary files left behind"
+  true
+}
+
+case_trace_then_dc() {
+  copy_s3d
+  "$DDA" dl s3d_small.yaml -o fr.h5 -q || fail "dl"
+  "$DDA" trace fr.h5 --point 5 5 5 --dip 90 --dip-direction 90 -o sec.h5 --vtk sec.vtu > out.txt || fail "trace"
+  grep -qE "^[0-9]+ lines \(section of 100 m\^2\) written to sec.h5$" out.txt || fail "trace printed: $(cat out.txt)"
+  [ -s sec.vtu ] || fail "sec.vtu missing"
+  "$DDA" info sec.h5 | grep -q "dda-lines" || fail "the section is not a lines file"
+  "$DDA" dc sec.h5 -o blocks.h5 -q || fail "dc of the section"
+  "$DDA" stats blocks.h5 --json > s.json || fail "stats"
+  # The section x = 5 of the 10 m cube, minus the tunnel's 16-gon of radius 1.5.
+  json_get s.json "abs(d['total_area'] - (100 - 8 * 1.5**2 * __import__('math').sin(__import__('math').pi / 8))) < 1e-9 * 100" \
+    | grep -q True || fail "total area $(json_get s.json "d['total_area']")"
+  # The scenario's trace plane 'mid' is the same plane: the same blocks.
+  "$DDA" dc fr.mid.lines.h5 -o blocks_mid.h5 -q || fail "dc of the scenario's section"
+  "$DDA" stats blocks_mid.h5 --json > s2.json || fail "stats of the scenario's section"
+  [ "$(json_get s.json "d['blocks']")" = "$(json_get s2.json "d['blocks']")" ] || fail "the two sections differ"
+  "$DDA" trace --help | grep -q "Usage" || fail "trace --help"
+  expect_error 1 "^dda: fr.h5: the plane through \(5, 5, 50\) misses the domain of the fractures\.$" -- \
+    "$DDA" trace fr.h5 --point 5 5 50 --dip 0 --dip-direction 0 -o x.h5
+  expect_error 1 "sec.h5" -- "$DDA" trace sec.h5 --point 5 5 5 --dip 0 --dip-direction 0 -o x.h5
+  expect_usage_error "$DDA" trace fr.h5 --point 5 5 --dip 0 --dip-direction 0 -o x.h5
+  [ ! -e x.h5 ] || fail "an output was written despite the error"
+}
+
+case_dl3_bad_key() {
+  copy_s3d
+  sed 's/spacing: 4/spaceing: 4/' s3d_small.yaml > bad.yaml
+  expect_error 1 "^dda: bad.yaml:12: unknown key 'persistent_sets\[0\]\.spaceing' \(did you mean 'spacing'\?\)" -- \
+    "$DDA" dl bad.yaml -o f.h5
+  { cat s3d_small.yaml; printf 'joint_sets: []\n'; } > bad2.yaml
+  expect_error 1 "^dda: bad2.yaml:23: joint_sets is a 2D section, not read with dimension: 3 \(in 3D, use fracture_sets\)\.$" -- \
+    "$DDA" dl bad2.yaml -o f.h5
+  sed 's/^dimension: 3/dimension: 4/' s3d_small.yaml > bad3.yaml
+  expect_error 1 "^dda: bad3.yaml:5: dimension must be 2 or 3, got 4\.$" -- "$DDA" dl bad3.yaml -o f.h5
+  sed 's/radius: 1.5, sides: 16/radius: 1.5, sides: 2/' s3d_small.yaml > bad4.yaml
+  expect_error 1 "^dda: bad4.yaml:18: excavations\[0\]\.sides must be in \[3, 1000\], got 2\.$" -- "$DDA" dl bad4.yaml -o f.h5
+  [ ! -e f.h5 ] || fail "an output was written despite the error"
+  write_scenario
+  printf 'planes: []\n' >> scenario.yaml
+  expect_error 1 "^dda: scenario.yaml:[0-9]+: planes is a 3D section; add dimension: 3 at the top level to use it\.$" -- \
+    "$DDA" dl scenario.yaml -o l.h5
+}
+
 "case_$CASE"
 echo "PASS [$CASE]"

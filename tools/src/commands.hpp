@@ -22,6 +22,7 @@ void add_plot_command(CLI::App& app, const GlobalOptions& global);
 void add_info_command(CLI::App& app, const GlobalOptions& global);
 void add_df_command(CLI::App& app, const GlobalOptions& global);
 void add_history_command(CLI::App& app, const GlobalOptions& global);
+void add_trace_command(CLI::App& app, const GlobalOptions& global);  // 3D fractures -> 2D section lines
 // Analytical toolkit (tools/analysis; docs/analytical.md).
 void add_newmark_command(CLI::App& app, const GlobalOptions& global);
 void add_sliding3d_command(CLI::App& app, const GlobalOptions& global);

@@ -29,6 +29,7 @@ int main(int argc, char** argv) {
   dda::cli::add_plot_command(app, global);
   dda::cli::add_info_command(app, global);
   dda::cli::add_history_command(app, global);
+  dda::cli::add_trace_command(app, global);
   dda::cli::add_newmark_command(app, global);
   dda::cli::add_sliding3d_command(app, global);
   dda::cli::add_wedge_command(app, global);

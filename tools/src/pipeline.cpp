@@ -8,6 +8,7 @@
 #include "dda/common/error.hpp"
 #include "dda/common/scenario.hpp"
 #include "dda/dl/generate.hpp"
+#include "dda/dl/scenario3d.hpp"
 
 namespace dda::cli {
 
@@ -33,11 +34,29 @@ DlOutcome run_dl(const std::string& input_path) {
   return {std::move(result.model), std::move(result.report)};
 }
 
+int dl_input_dimension(const std::string& input_path) {
+  if (has_extension(input_path, ".geo") || !std::filesystem::exists(input_path)) return 2;
+  return dl::scenario_dimension(load_scenario(input_path));
+}
+
+dl::DlResult3 run_dl3(const std::string& input_path) {
+  if (!std::filesystem::exists(input_path)) throw InputError(input_path + ": no such file.");
+  return dl::generate_3d_from_scenario(load_scenario(input_path));
+}
+
+std::string section_path(const std::string& base, const std::string& name, const std::string& suffix) {
+  const std::filesystem::path p(base);
+  return (p.parent_path() / (p.stem().string() + "." + name + suffix)).string();
+}
+
 dc::CutOptions cut_options_of(const LineModel& lines) {
   const std::string& text = lines.provenance.scenario_text;
   if (text.empty()) return dc::parse_cut_options(std::nullopt);
   const std::string label = lines.provenance.scenario_path.empty() ? "scenario" : lines.provenance.scenario_path;
   const YamlNode root = YamlNode::load_string(text, label);
+  // A section of a 3D network keeps the 3D scenario, whose `cutting:` holds
+  // the 3D cutter's keys: the 2D cut of the section takes the defaults.
+  if (dl::scenario_dimension(root) == 3) return dc::parse_cut_options(std::nullopt);
   return dc::parse_cut_options(root.optional_child("cutting"));
 }
 

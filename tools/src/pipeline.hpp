@@ -9,6 +9,7 @@
 #include "dda/common/block_model.hpp"
 #include "dda/common/line_model.hpp"
 #include "dda/dc/cut.hpp"
+#include "dda/dl/scenario3d.hpp"
 
 namespace dda::cli {
 
@@ -23,6 +24,19 @@ struct DlOutcome {
   nlohmann::json report;
 };
 DlOutcome run_dl(const std::string& input_path);
+
+// 3 for a scenario with `dimension: 3`, else 2 (a .geo file, or a path that
+// run_dl will report as missing, counts as 2D).
+int dl_input_dimension(const std::string& input_path);
+
+// DL in 3D: the fractures of a `dimension: 3` scenario, with the report and
+// the scenario's trace planes.
+dl::DlResult3 run_dl3(const std::string& input_path);
+
+// `<stem of base>.<name><suffix>` in base's folder: where `dda dl` writes the
+// section of a scenario trace plane next to the fractures file (suffix
+// ".lines.h5") or its ParaView file (".lines.vtu").
+std::string section_path(const std::string& base, const std::string& name, const std::string& suffix);
 
 // The `cutting:` section of the scenario stored in a lines file, if any.
 dc::CutOptions cut_options_of(const LineModel& lines);

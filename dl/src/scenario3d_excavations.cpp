@@ -1,0 +1,163 @@
+// Section `excavations` in 3D: convex openings (tunnels, boxes, slopes,
+// general half-spaces), each a ConvexRegion whose normals point out of the
+// opened volume.
+#include <Eigen/Geometry>
+#include <cmath>
+
+#include "builder.hpp"
+#include "dda/dl/dfn3d.hpp"
+#include "dda/dl/polygon3.hpp"
+#include "scenario3d_builder.hpp"
+
+namespace dda::dl::detail {
+
+namespace {
+
+HalfSpace unit_half_space(const Vec3& normal, const Vec3& point) {
+  const Vec3 n = normal.normalized();
+  return {n, n.dot(point)};
+}
+
+// Volume of the region's part inside the box, exactly: that part is a convex
+// polyhedron whose faces lie on the box's planes and the region's; each face
+// is its plane's section clipped by every other half-space, and the volume is
+// the sum of (distance of the face's plane from a centre) * area / 3.
+double volume_in_box(const ConvexRegion& region, const Box3& box) {
+  const double diag = (box.hi - box.lo).norm(), tol = 1e-12 * diag;
+  std::vector<HalfSpace> all = box_region(box).half_spaces;
+  for (HalfSpace h : region.half_spaces) {
+    const double len = h.normal.norm();
+    h.normal /= len;
+    h.offset /= len;
+    all.push_back(h);
+  }
+  // A plane given twice would count its face twice.
+  std::vector<HalfSpace> planes;
+  for (const HalfSpace& h : all) {
+    bool twice = false;
+    for (const HalfSpace& g : planes)
+      twice = twice || ((g.normal - h.normal).norm() < 1e-12 && std::abs(g.offset - h.offset) < tol);
+    if (!twice) planes.push_back(h);
+  }
+  const Vec3 centre = 0.5 * (box.lo + box.hi);
+  const Box3 wide = box.grown(diag);  // so that the box's own faces have a section
+  double volume = 0;
+  for (std::size_t j = 0; j < planes.size(); ++j) {
+    Polygon3 face = plane_in_box(planes[j].normal, planes[j].offset, wide);
+    for (std::size_t k = 0; k < planes.size() && face.size() >= 3; ++k)
+      if (k != j) face = clip_polygon(face, planes[k], tol);
+    volume += (planes[j].offset - planes[j].normal.dot(centre)) * polygon_area(face) / 3;
+  }
+  return volume;
+}
+
+// Unit vectors across a tunnel's axis: `up` is +z made perpendicular to the
+// axis (+y for a vertical shaft, where +z is the axis), `side` completes them.
+std::pair<Vec3, Vec3> tunnel_frame(const Vec3& axis) {
+  Vec3 up = Vec3::UnitZ() - axis.z() * axis;
+  if (up.norm() < 1e-9) up = Vec3::UnitY() - axis.y() * axis;
+  up.normalize();
+  return {up, up.cross(axis).normalized()};
+}
+
+ConvexRegion tunnel(const YamlNode& n, nlohmann::json& rep) {
+  const std::string section = n.choice("section", {"circle", "rectangle"}, "circle");
+  if (section == "circle")
+    n.allow({"shape", "name", "section", "start", "end", "radius", "sides"});
+  else
+    n.allow({"shape", "name", "section", "start", "end", "width", "height"});
+  const Vec3 start = point3(n, "start"), end = point3(n, "end");
+  if (!((end - start).norm() > 0)) n.fail_key("end", "must differ from start (the tunnel has no length)");
+  const Vec3 axis = (end - start).normalized();
+  const auto [up, side] = tunnel_frame(axis);
+  ConvexRegion r;
+  r.half_spaces.push_back(unit_half_space(-axis, start));  // the end caps
+  r.half_spaces.push_back(unit_half_space(axis, end));
+  rep["section"] = section;
+  rep["length"] = (end - start).norm();
+  if (section == "circle") {
+    const double radius = n.number("radius", Range::positive());
+    const int sides = static_cast<int>(n.integer("sides", 24, Range::closed(3, 1000)));
+    // Vertices on the circle, one at the crown (along `up`): face k faces
+    // the angle (k + 1/2) step from up, at the apothem from the axis.
+    const double step = 2 * kPi / sides, apothem = radius * std::cos(step / 2);
+    for (int k = 0; k < sides; ++k) {
+      const double a = (k + 0.5) * step;
+      const Vec3 dir = std::cos(a) * up + std::sin(a) * side;
+      r.half_spaces.push_back({dir, dir.dot(start) + apothem});
+    }
+    rep["radius"] = radius;
+    rep["sides"] = sides;
+  } else {
+    const double w = n.number("width", Range::positive()), h = n.number("height", Range::positive());
+    for (const auto& [dir, half] :
+         {std::pair{up, h / 2}, std::pair{Vec3(-up), h / 2}, std::pair{side, w / 2}, std::pair{Vec3(-side), w / 2}})
+      r.half_spaces.push_back({dir, dir.dot(start) + half});
+    rep["width"] = w;
+    rep["height"] = h;
+  }
+  return r;
+}
+
+ConvexRegion read_region(const YamlNode& n, const std::string& shape, nlohmann::json& rep) {
+  if (shape == "tunnel") return tunnel(n, rep);
+  if (shape == "box") {
+    n.allow({"shape", "name", "min", "max"});
+    const Vec3 lo = point3(n, "min"), hi = point3(n, "max");
+    if (!(hi.array() > lo.array()).all()) n.fail_key("max", "must be greater than min in x, y and z");
+    return box_region({lo, hi});
+  }
+  if (shape == "slope") {
+    n.allow({"shape", "name", "dip", "dip_direction", "point", "floor"});
+    const double dip = read_dip(n, "dip"), dd = read_dip_direction(n, "dip_direction");
+    const Vec3 face = normal_from_dip(dip, dd);  // upper normal: it points into the air
+    ConvexRegion r{{unit_half_space(-face, point3(n, "point"))}};
+    if (n.has("floor")) {
+      const double floor = n.number("floor", Range::any());
+      r.half_spaces.push_back({Vec3(0, 0, -1), -floor});  // the air above the toe level
+      rep["floor"] = floor;
+    }
+    rep["dip"] = dip;
+    rep["dip_direction"] = dd;
+    return r;
+  }
+  n.allow({"shape", "name", "planes"});
+  ConvexRegion r;
+  const auto planes = n.list("planes");
+  if (planes.empty()) n.fail_key("planes", "must list at least one plane {normal, point}");
+  for (const YamlNode& p : planes) {
+    p.allow({"normal", "point"});
+    const Vec3 normal = point3(p, "normal");
+    if (!(normal.norm() > 0)) p.fail_key("normal", "must not be the zero vector");
+    r.half_spaces.push_back(unit_half_space(normal, point3(p, "point")));
+  }
+  return r;
+}
+
+}  // namespace
+
+void read_excavations3(const YamlNode& root, Builder3& b) {
+  nlohmann::json rep = nlohmann::json::array();
+  const auto items = root.list_or_empty("excavations");
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    const YamlNode& n = items[i];
+    if (!n.is_map()) n.fail("must be a mapping with a shape (tunnel, box, slope or half_spaces)");
+    const std::string shape = n.choice("shape", {"tunnel", "box", "slope", "half_spaces"});
+    Excavation3 ex;
+    ex.name = read_name(n, "E", i);
+    for (const Excavation3& other : b.model.excavations)
+      if (other.name == ex.name) n.fail_key("name", "'" + ex.name + "' is already the name of another excavation");
+    nlohmann::json entry = {{"name", ex.name}, {"shape", shape}};
+    ex.region = read_region(n, shape, entry);
+    const double volume = volume_in_box(ex.region, b.model.domain);
+    if (!(volume > 1e-12 * b.model.domain.volume()))
+      n.fail("does not reach into the domain (an excavation must open part of it)");
+    entry["half_spaces"] = ex.region.half_spaces.size();
+    entry["volume_in_domain"] = volume;
+    rep.push_back(entry);
+    b.model.excavations.push_back(std::move(ex));
+  }
+  b.report["excavations"] = rep;
+}
+
+}  // namespace dda::dl::detail
