@@ -1,23 +1,66 @@
 // The fractures file (`dda-fractures`): DL's 3D output. Layout in
 // docs/formats.md; keep the two in step.
 
+#include <limits>
+
 #include "dda/common/atomic_file.hpp"
+#include "dda/common/error.hpp"
 #include "dda/common/model_io3.hpp"
 #include "model_io3_detail.hpp"
 
 namespace dda {
 namespace {
 
-void write_excavations(h5::Writer& w, const std::vector<Excavation3>& excavations) {
+// An (n, 3) int32 dataset (h5::Writer writes 1-D integers only).
+void write_triangles(h5::Writer& w, const std::string& shown, hid_t loc, const std::string& name,
+                     const std::vector<std::int32_t>& ids, const std::string& description) {
+  const hsize_t dims[2] = {ids.size() / 3, 3};
+  auto fail = [&](const std::string& what) { throw InputError(shown + ": cannot write: " + what + " " + name + "."); };
+  h5::Id space(H5Screate_simple(2, dims, nullptr), H5Sclose);
+  if (!space.valid()) fail("cannot make the dataspace of");
+  h5::Id ds(H5Dcreate2(loc, name.c_str(), H5T_STD_I32LE, space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+            H5Dclose);
+  if (!ds.valid()) fail("cannot create dataset");
+  if (!ids.empty() && H5Dwrite(ds.get(), H5T_NATIVE_INT32, H5S_ALL, H5S_ALL, H5P_DEFAULT, ids.data()) < 0)
+    fail("cannot write dataset");
+  w.attr_text(ds.get(), "units", "");
+  w.attr_text(ds.get(), "description", description);
+  if (!ds.close()) fail("cannot finish dataset");
+}
+
+void append_mesh(const TriangleMesh& m, std::vector<Vec3>& vertices, std::vector<std::int32_t>& ids) {
+  vertices.insert(vertices.end(), m.vertices.begin(), m.vertices.end());
+  for (const auto& t : m.triangles) ids.insert(ids.end(), t.begin(), t.end());
+}
+
+// Written only with a surface: an absent group is a box domain.
+void write_domain_surface(h5::Writer& w, const std::string& shown, const std::optional<TriangleMesh>& surface) {
+  if (!surface) return;
+  h5::Id g = w.group("domain/surface");
+  std::vector<Vec3> vertices;
+  std::vector<std::int32_t> ids;
+  append_mesh(*surface, vertices, ids);
+  w.f64(g.get(), "vertices", io3::flatten(vertices), {vertices.size(), 3}, "m",
+        "vertices x, y, z of the closed surface that bounds the rock");
+  write_triangles(w, shown, g.get(), "triangles", ids,
+                  "vertex ids (rows of vertices, from 0) of each triangle, counter-clockwise seen from outside the rock");
+}
+
+void write_excavations(h5::Writer& w, const std::string& shown, const std::vector<Excavation3>& excavations) {
   h5::Id g = w.group("excavations");
   std::vector<std::string> names;
   std::vector<double> planes;
-  std::vector<std::int64_t> offsets{0};
+  std::vector<std::int64_t> offsets{0}, vertex_offsets{0}, triangle_offsets{0};
+  std::vector<Vec3> mesh_vertices;
+  std::vector<std::int32_t> mesh_ids;
   for (const Excavation3& e : excavations) {
     names.push_back(e.name);
     for (const HalfSpace& h : e.region.half_spaces)
       planes.insert(planes.end(), {h.normal.x(), h.normal.y(), h.normal.z(), h.offset});
     offsets.push_back(static_cast<std::int64_t>(planes.size() / 4));
+    if (e.surface) append_mesh(*e.surface, mesh_vertices, mesh_ids);
+    vertex_offsets.push_back(static_cast<std::int64_t>(mesh_vertices.size()));
+    triangle_offsets.push_back(static_cast<std::int64_t>(mesh_ids.size() / 3));
   }
   w.strings(g.get(), "name", names, "", "name of excavation i (UTF-8)");
   w.f64(g.get(), "half_spaces", planes, {planes.size() / 4, 4}, "m",
@@ -25,6 +68,16 @@ void write_excavations(h5::Writer& w, const std::vector<Excavation3>& excavation
         "one excavation after another; the excavation is their intersection");
   w.i64(g.get(), "offsets", offsets, "",
         "excavation i is half_spaces[offsets[i]:offsets[i+1]]; E+1 entries");
+  w.f64(g.get(), "mesh_vertices", io3::flatten(mesh_vertices), {mesh_vertices.size(), 3}, "m",
+        "vertices of the closed surfaces of the excavations that have one, one excavation after another");
+  w.i64(g.get(), "mesh_vertex_offsets", vertex_offsets, "",
+        "excavation i has mesh_vertices[mesh_vertex_offsets[i]:mesh_vertex_offsets[i+1]]; E+1 entries");
+  write_triangles(w, shown, g.get(), "mesh_triangles", mesh_ids,
+                  "triangles of the excavations' surfaces: vertex ids local to the excavation's mesh_vertices "
+                  "(from 0), counter-clockwise seen from outside the opening");
+  w.i64(g.get(), "mesh_triangle_offsets", triangle_offsets, "",
+        "excavation i has mesh_triangles[mesh_triangle_offsets[i]:mesh_triangle_offsets[i+1]] "
+        "(none: no surface); E+1 entries");
 }
 
 void write_fractures(h5::Writer& w, const std::vector<Fracture3>& fractures) {
@@ -61,24 +114,87 @@ void write_fractures(h5::Writer& w, const std::vector<Fracture3>& fractures) {
         "bed fracture i was generated in (index into /layers), -1 if none");
 }
 
+// An (n, 3) integer dataset of vertex ids.
+std::vector<std::array<int, 3>> read_triangles(const h5::Reader& r, const std::string& ds) {
+  const h5::Array<std::int64_t> a = r.i64(ds);
+  if (a.dims.size() != 2 || a.dims[1] != 3)
+    r.fail("dataset " + ds + " must have shape (N, 3), one row of vertex ids per triangle");
+  std::vector<std::array<int, 3>> out(a.dims[0]);
+  for (std::size_t i = 0; i < a.data.size(); ++i) {
+    if (a.data[i] < 0 || a.data[i] > std::numeric_limits<int>::max())
+      r.fail("dataset " + ds + " has the vertex id " + std::to_string(a.data[i]) + ", which cannot be one");
+    out[i / 3][i % 3] = static_cast<int>(a.data[i]);
+  }
+  return out;
+}
+
+// A surface as stored must be closed (the cutter's inside test needs it);
+// it is turned outward here, so the file may hold it either way round.
+TriangleMesh checked_mesh(const h5::Reader& r, TriangleMesh m, const std::string& what) {
+  try {
+    check_closed_surface(m, what);
+  } catch (const InputError& e) {
+    std::string s = e.what();
+    if (!s.empty() && s.back() == '.') s.pop_back();
+    r.fail(s);
+  }
+  orient_outward(m);
+  return m;
+}
+
+std::optional<TriangleMesh> read_domain_surface(const h5::Reader& r) {
+  if (!r.exists("/domain/surface")) return std::nullopt;
+  TriangleMesh m;
+  std::size_t nv = 0;
+  const std::vector<double> xyz = io3::read_table(r, "/domain/surface/vertices", 3, nv);
+  for (std::size_t i = 0; i < nv; ++i) m.vertices.push_back(io3::row3(xyz, i));
+  m.triangles = read_triangles(r, "/domain/surface/triangles");
+  return checked_mesh(r, std::move(m), "the domain surface in /domain/surface");
+}
+
 std::vector<Excavation3> read_excavations(const h5::Reader& r) {
   std::vector<Excavation3> out;
   if (!r.exists("/excavations")) return out;
   std::vector<std::string> names = r.strings("/excavations/name");
   std::size_t nh = 0;
   const std::vector<double> planes = io3::read_table(r, "/excavations/half_spaces", 4, nh);
+  // An excavation may be a surface alone; files without meshes (older ones)
+  // need a half-space for each.
+  const bool meshes = r.exists("/excavations/mesh_triangles");
   const std::vector<std::int64_t> off =
-      io3::read_offsets(r, "/excavations/offsets", nh, 1, "excavation");
+      io3::read_offsets(r, "/excavations/offsets", nh, meshes ? 0 : 1, "excavation");
   if (off.size() != names.size() + 1)
     r.fail("dataset /excavations/offsets has " + std::to_string(off.size()) +
            " entries, expected " + std::to_string(names.size() + 1) +
            ", one more than /excavations/name");
+  std::size_t nv = 0;
+  std::vector<double> xyz;
+  std::vector<std::array<int, 3>> tris;
+  std::vector<std::int64_t> voff(names.size() + 1, 0), toff(names.size() + 1, 0);
+  if (meshes) {
+    xyz = io3::read_table(r, "/excavations/mesh_vertices", 3, nv);
+    tris = read_triangles(r, "/excavations/mesh_triangles");
+    voff = io3::read_offsets(r, "/excavations/mesh_vertex_offsets", nv, 0, "excavation");
+    toff = io3::read_offsets(r, "/excavations/mesh_triangle_offsets", tris.size(), 0, "excavation");
+    if (voff.size() != names.size() + 1 || toff.size() != names.size() + 1)
+      r.fail("datasets /excavations/mesh_vertex_offsets and /excavations/mesh_triangle_offsets must have " +
+             std::to_string(names.size() + 1) + " entries, one more than /excavations/name");
+  }
   for (std::size_t i = 0; i < names.size(); ++i) {
     Excavation3 e;
     e.name = names[i];
     for (auto k = static_cast<std::size_t>(off[i]); k < static_cast<std::size_t>(off[i + 1]); ++k)
       e.region.half_spaces.push_back(
           {Vec3(planes[4 * k], planes[4 * k + 1], planes[4 * k + 2]), planes[4 * k + 3]});
+    if (toff[i + 1] > toff[i]) {
+      TriangleMesh m;
+      for (auto k = static_cast<std::size_t>(voff[i]); k < static_cast<std::size_t>(voff[i + 1]); ++k)
+        m.vertices.push_back(io3::row3(xyz, k));
+      m.triangles.assign(tris.begin() + toff[i], tris.begin() + toff[i + 1]);
+      e.surface = checked_mesh(r, std::move(m), "the surface of excavation " + std::to_string(i) + " ('" + e.name + "')");
+    } else if (e.region.half_spaces.empty()) {
+      r.fail("excavation " + std::to_string(i) + " ('" + e.name + "') has neither half-spaces nor a surface");
+    }
     out.push_back(std::move(e));
   }
   return out;
@@ -135,7 +251,8 @@ void write_fractures_h5(const std::string& path, const FractureModel& model) {
     h5::Writer w(path, out.temp_path());
     io3::write_root_attributes(w, kFracturesFormat, model.provenance);
     io3::write_domain(w, model.domain);
-    write_excavations(w, model.excavations);
+    write_domain_surface(w, path, model.domain_surface);
+    write_excavations(w, path, model.excavations);
     write_fractures(w, model.fractures);
     io3::write_sets(w, model.sets);
     io3::write_points(w, model.points);
@@ -151,6 +268,7 @@ FractureModel read_fractures_h5(const std::string& path) {
   FractureModel m;
   m.provenance = io3::read_provenance(r);
   m.domain = io3::read_domain(r);
+  m.domain_surface = read_domain_surface(r);
   m.sets = io3::read_sets(r);
   m.points = io3::read_points(r);
   m.layers = io3::read_layers(r, m.bed_normal);

@@ -14,6 +14,9 @@ namespace {
 
 using Polygon3 = std::vector<Vec3>;
 
+constexpr int kVtkTriangle = 5;
+constexpr std::int32_t kSurfaceShape = 3;  // `shape` of a surface triangle (after the FractureShape codes)
+
 // e1, e2 with (e1, e2, n) a right-handed orthonormal frame, so that
 // cos t e1 + sin t e2 turns counter-clockwise about the unit normal n. The
 // coordinate axis least aligned with n keeps the cross product well
@@ -96,6 +99,23 @@ void write_fractures_vtu(const std::string& path, const FractureModel& model) {
     layer.push_back(f.layer);
     id.push_back(static_cast<std::int64_t>(i));
   }
+  // The closed surfaces (the domain's, the excavations'), so that the
+  // ground and the openings show with the fractures; each triangle is a
+  // cell of the set its faces get in the blocks.
+  auto add_surface = [&](const TriangleMesh& s, int tag) {
+    for (const auto& t : s.triangles) {
+      for (int v : t) g.add_point(s.vertices[static_cast<std::size_t>(v)]);
+      g.add_cell(3, kVtkTriangle);
+      set.push_back(tag);
+      kind.push_back(-1);
+      shape.push_back(kSurfaceShape);
+      layer.push_back(-1);
+      id.push_back(-1);
+    }
+  };
+  if (model.domain_surface) add_surface(*model.domain_surface, kBoundarySet);
+  for (const Excavation3& e : model.excavations)
+    if (e.surface) add_surface(*e.surface, kExcavationSet);
   g.cell_data("set", 1, std::move(set));
   g.cell_data("kind", 1, std::move(kind));
   g.cell_data("shape", 1, std::move(shape));

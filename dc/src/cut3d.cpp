@@ -49,10 +49,22 @@ void check_input(const FractureModel& m) {
     if (f.set < 0 || f.set >= static_cast<int>(m.sets.size()))
       throw InputError(where.str() + "names a joint set that the file does not list");
   }
-  for (const auto& e : m.excavations)
+  for (const auto& e : m.excavations) {
     for (const auto& h : e.region.half_spaces)
       if (!h.normal.allFinite() || h.normal.norm() < 1e-12 || !std::isfinite(h.offset))
         throw InputError("fractures file: excavation '" + e.name + "' has a zero or non-finite half-space normal");
+    if (e.surface) check_closed_surface(*e.surface, "fractures file: the surface of excavation '" + e.name + "'");
+    else if (e.region.half_spaces.empty())
+      throw InputError("fractures file: excavation '" + e.name + "' has neither half-spaces nor a surface");
+  }
+  if (m.domain_surface) {
+    check_closed_surface(*m.domain_surface, "fractures file: the domain surface");
+    // The cells start as the box; rock outside it would be lost unseen.
+    const Box3 b = mesh_bounds(*m.domain_surface);
+    const double tol = 1e-9 * (m.domain.hi - m.domain.lo).norm();
+    if ((b.lo.array() < m.domain.lo.array() - tol).any() || (b.hi.array() > m.domain.hi.array() + tol).any())
+      throw InputError("fractures file: the domain surface reaches outside the domain box (the box must hold it)");
+  }
 }
 
 bool boxes_meet(const Box3& a, const Box3& b) {
@@ -142,6 +154,14 @@ Cut3dResult cut_blocks_3d(const FractureModel& in, const Cut3dOptions& options) 
       pending = std::move(still);
     }
   }
+  // The rock inside a domain surface; the rest of the box was never rock,
+  // so it is not counted as excavated.
+  detail3::SurfaceCut domain_cut;
+  if (in.domain_surface) {
+    domain_cut = detail3::cut_by_surface(w, *in.domain_surface, true);
+    w.surface_splits += domain_cut.splits;
+    w.domain_surface_planes = domain_cut.on_surface;
+  }
   const std::size_t blocks_before_excavation = w.cells.size();
 
   detail3::excavate(w, in.excavations);
@@ -162,6 +182,9 @@ Cut3dResult cut_blocks_3d(const FractureModel& in, const Cut3dOptions& options) 
   r["finite_passes"] = passes;
   r["unfinished_fractures"] = unfinished_fractures;
   r["partial_block_crossings"] = unfinished_cells;
+  r["domain_surface_triangles"] = in.domain_surface ? in.domain_surface->triangles.size() : 0;
+  r["outside_domain_surface_volume"] = domain_cut.removed_volume;
+  r["surface_splits"] = w.surface_splits;
   r["blocks_before_excavation"] = blocks_before_excavation;
   r["excavated_volume"] = w.excavated_volume;
   r["removed_by_hole_points"] = removed_by_holes;

@@ -70,8 +70,13 @@ bool boxes_meet(const Box3& a, const Box3& b, double tol) {
 
 }  // namespace
 
-std::vector<int> glue_bodies(const Work& w, int& body_count, std::size_t& glued_fractures) {
+std::vector<int> glue_bodies(const Work& w, int& body_count, std::size_t& glued_fractures,
+                             std::vector<std::vector<std::uint8_t>>& contact) {
   UnionFind uf(w.cells.size());
+  // Faces that meet another part across a fracture that covers the overlap:
+  // a contact if that part ends up in another body, a closed crack inside
+  // the body if not (known only once every glue is found).
+  std::vector<std::pair<FaceRef, FaceRef>> covered;
   // Faces on planes that can glue, by plane.
   std::map<int, std::vector<FaceRef>> by_plane;
   for (std::size_t c = 0; c < w.cells.size(); ++c)
@@ -114,7 +119,10 @@ std::vector<int> glue_bodies(const Work& w, int& body_count, std::size_t& glued_
         // (~1e-16 of their size squared): not an overlap.
         const double size_a = (a.bounds.hi - a.bounds.lo).norm(), size_b = (b.bounds.hi - b.bounds.lo).norm();
         if (overlap.size() < 3 || std::abs(signed_area(overlap)) <= 1e-10 * size_a * size_b) continue;
-        if (frame.extent() && frame.extent()->covers(overlap)) continue;  // a real joint here
+        if (frame.extent() && frame.extent()->covers(overlap)) {  // a real joint here
+          covered.push_back({a, b});
+          continue;
+        }
         uf.unite(a.cell, b.cell);
         const int f = w.plane_fracture[static_cast<std::size_t>(plane)];
         if (f >= 0) fracture_glues[static_cast<std::size_t>(f)] = true;
@@ -122,6 +130,13 @@ std::vector<int> glue_bodies(const Work& w, int& body_count, std::size_t& glued_
     }
   }
   glued_fractures = static_cast<std::size_t>(std::count(fracture_glues.begin(), fracture_glues.end(), true));
+  contact.assign(w.cells.size(), {});
+  for (std::size_t c = 0; c < w.cells.size(); ++c) contact[c].assign(w.cells[c].faces.size(), 0);
+  for (const auto& [a, b] : covered)
+    if (uf.find(a.cell) != uf.find(b.cell)) {
+      contact[static_cast<std::size_t>(a.cell)][static_cast<std::size_t>(a.face)] = 1;
+      contact[static_cast<std::size_t>(b.cell)][static_cast<std::size_t>(b.face)] = 1;
+    }
   std::vector<int> body(w.cells.size(), -1), root_body(w.cells.size(), -1);
   body_count = 0;
   for (std::size_t i = 0; i < w.cells.size(); ++i) {

@@ -3,13 +3,13 @@
 // piece and the rest goes on to the next plane; what is left after the last
 // plane is inside and removed. The kept pieces touch each other along the
 // planes that separated them (kArtificialSet faces), where
-// cut3d_bodies.cpp glues them back into one body.
+// cut3d_bodies.cpp glues them back into one body. An excavation given as a
+// closed surface goes to cut3d_surface.cpp, which does the same with the
+// planes of its triangles.
 #include "cut3d_internal.hpp"
 #include "dda/common/geometry.hpp"
 
 namespace dda::dc::detail3 {
-
-namespace {
 
 double cell_volume(const cell::Cell& c) {
   std::vector<Vec3> xs;
@@ -20,11 +20,17 @@ double cell_volume(const cell::Cell& c) {
   return polyhedron_moments(xs, loops).volume;
 }
 
-}  // namespace
-
 void excavate(Work& w, const std::vector<Excavation3>& excavations) {
   std::vector<std::int8_t> sides;
   for (const Excavation3& e : excavations) {
+    if (e.surface) {
+      const SurfaceCut cut = cut_by_surface(w, *e.surface, false);
+      w.surface_splits += cut.splits;
+      w.excavated_volume += cut.removed_volume;
+      w.excavated_pieces += cut.removed_pieces;
+    }
+    // No half-spaces would be all space: an excavation that is only a surface.
+    if (e.region.half_spaces.empty()) continue;
     std::vector<int> planes;
     for (const HalfSpace& hs : e.region.half_spaces)
       planes.push_back(w.add_plane(hs.normal, hs.offset, PlaneRole::Excavation));

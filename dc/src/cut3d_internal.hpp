@@ -3,11 +3,13 @@
 //
 //   cut3d.cpp            orchestration, input checks, persistent and finite fractures
 //   cut3d_excavate.cpp   excavations
+//   cut3d_surface.cpp    closed triangulated surfaces: the domain's or an excavation's
 //   cut3d_bodies.cpp     glued parts -> bodies
 //   cut3d_output.cpp     cells -> Polyhedra, bodies, removability, report
 //   convex_cell.cpp      the plane-based convex cell and its split
 //   fracture_extent.cpp  does a finite fracture reach through a block
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -36,9 +38,15 @@ struct Work {
   int boundary_planes[6] = {0, 1, 2, 3, 4, 5};  // -x +x -y +y -z +z
   double snap = 0;  // m: vertices this close to a cutting plane count as on it
   std::size_t splits = 0;
+  std::size_t surface_splits = 0;  // by the planes of closed surfaces
   double excavated_volume = 0;
   std::size_t excavated_pieces = 0;
+  // Per plane (as far as it reaches): on the domain's surface, its own or
+  // one that coincides with it. Faces there are free surfaces (cut3d_output.cpp).
+  std::vector<bool> domain_surface_planes;
 };
+
+double cell_volume(const cell::Cell& c);
 
 // Where cell c lies relative to plane h (cell::classify with the job's snap).
 int classify(const Work& w, const cell::Cell& c, int h, std::vector<std::int8_t>& sides);
@@ -52,12 +60,34 @@ void split(const Work& w, const cell::Cell& c, int h, std::vector<std::int8_t>& 
 // touch each other.
 void excavate(Work& w, const std::vector<Excavation3>& excavations);
 
+// What cutting by a closed surface did.
+struct SurfaceCut {
+  // Per plane of the table: the surface's own planes, and earlier planes
+  // (fractures, the box) that coincide with one of them.
+  std::vector<bool> on_surface;
+  std::size_t splits = 0;
+  std::size_t removed_pieces = 0;
+  double removed_volume = 0;
+};
+
+// Cuts every cell the surface passes through by the planes of the triangles
+// that meet it (PlaneRole::Excavation: the parts glue back into bodies),
+// until each piece lies wholly inside or outside, then keeps the pieces
+// inside (`keep_inside`: a domain surface) or outside (an excavation). The
+// kept faces on the surface get kBoundarySet or kExcavationSet (also where a
+// fracture or the box lies on the surface); the other cuts are
+// kArtificialSet. Cells that lose part to an excavation are flagged exposed.
+SurfaceCut cut_by_surface(Work& w, const TriangleMesh& surface, bool keep_inside);
+
 // Bodies: parts are glued where opposite faces on one plane overlap and the
 // plane is an excavation's (artificial) or a finite fracture that does not
 // cover the whole overlap. Returns the body of every cell (numbered from 0);
 // `glued_fractures` counts the finite fractures that glue somewhere (they
-// end inside a body).
-std::vector<int> glue_bodies(const Work& w, int& body_count, std::size_t& glued_fractures);
+// end inside a body). `contact[c][f]` is 1 for a face of cell c on a finite
+// fracture that meets another body across it (faces on finite fractures
+// inside one body do not hold it).
+std::vector<int> glue_bodies(const Work& w, int& body_count, std::size_t& glued_fractures,
+                             std::vector<std::vector<std::uint8_t>>& contact);
 
 // Builds the output blocks and bodies (moments, layers, removability) and
 // removes the bodies that contain hole points.

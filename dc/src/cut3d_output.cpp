@@ -50,19 +50,30 @@ Polyhedron to_polyhedron(const cell::Cell& c, const cell::PlaneTable& t) {
 void build_output(Work& w, const FractureModel& in, const Cut3dOptions& options, PolyhedronModel& out,
                   std::size_t& removed_by_holes, std::size_t& unfinished_fractures) {
   bool free_plane[6] = {false, false, false, false, false, false};
+  bool free_surface = false;
   for (const auto& name : options.free_boundaries) {
+    if (name == "surface") {
+      free_surface = true;
+      continue;
+    }
     const int i = boundary_index(name);
-    if (i < 0) throw InputError("cutting.free_boundaries: '" + name + "' is not one of x-, x+, y-, y+, z-, z+");
+    if (i < 0)
+      throw InputError("cutting.free_boundaries: '" + name + "' is not one of x-, x+, y-, y+, z-, z+, surface");
     free_plane[i] = true;
   }
+  // A domain surface usually shapes the ground (a slope face, benches): its
+  // faces off the box are free when "surface" is listed (the default); on
+  // the box they follow the box face's name.
   auto is_free_boundary = [&](const cell::Face& f) {
     for (int i = 0; i < 6; ++i)
       if (f.plane == w.boundary_planes[i]) return free_plane[i];
-    return false;
+    const auto p = static_cast<std::size_t>(f.plane);
+    return free_surface && p < w.domain_surface_planes.size() && w.domain_surface_planes[p];
   };
 
   int body_count = 0;
-  std::vector<int> body = glue_bodies(w, body_count, unfinished_fractures);
+  std::vector<std::vector<std::uint8_t>> finite_contact;
+  std::vector<int> body = glue_bodies(w, body_count, unfinished_fractures, finite_contact);
 
   // Hole points remove the body they fall in.
   std::vector<bool> body_removed(static_cast<std::size_t>(body_count), false);
@@ -102,8 +113,10 @@ void build_output(Work& w, const FractureModel& in, const Cut3dOptions& options,
     bool free_face = w.cells[i].exposed;
     for (std::size_t f = 0; f < p.faces.size(); ++f) {
       const auto& cf = w.cells[i].faces[f];
+      const bool finite = w.role[static_cast<std::size_t>(cf.plane)] == PlaneRole::Finite;
       if (cf.tag == kBoundarySet && is_free_boundary(cf)) free_face = true;
-      else if (cf.tag >= 0 || cf.tag == kBoundarySet) contact_normals[nb].push_back(p.faces[f].normal);
+      else if ((cf.tag >= 0 && (!finite || finite_contact[i][f])) || cf.tag == kBoundarySet)
+        contact_normals[nb].push_back(p.faces[f].normal);
     }
     exposed[nb] = exposed[nb] || free_face;
     out.bodies[nb].parts.push_back(static_cast<int>(out.blocks.size()));
@@ -120,7 +133,7 @@ void build_output(Work& w, const FractureModel& in, const Cut3dOptions& options,
   out.layers = in.layers;
   out.bed_normal = in.bed_normal;
   out.domain = in.domain;
-  out.domain_volume = in.domain.volume();
+  out.domain_volume = in.domain_surface ? std::abs(enclosed_volume(*in.domain_surface)) : in.domain.volume();
   out.excavated_volume = w.excavated_volume + hole_volume;
   out.provenance = in.provenance;
 }
@@ -143,7 +156,8 @@ Cut3dOptions parse_cut3d_options(const std::optional<YamlNode>& cutting) {
     const YamlNode list = cutting->child("free_boundaries");
     for (const auto& item : list.items()) {
       const std::string name = item.as_text();
-      if (detail3::boundary_index(name) < 0) item.fail("must be one of x-, x+, y-, y+, z-, z+, got '" + name + "'");
+      if (name != "surface" && detail3::boundary_index(name) < 0)
+        item.fail("must be one of x-, x+, y-, y+, z-, z+, surface, got '" + name + "'");
       o.free_boundaries.push_back(name);
     }
   }

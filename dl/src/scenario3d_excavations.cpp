@@ -1,10 +1,12 @@
 // Section `excavations` in 3D: convex openings (tunnels, boxes, slopes,
 // general half-spaces), each a ConvexRegion whose normals point out of the
-// opened volume.
+// opened volume, and openings of any shape given as closed surfaces.
 #include <Eigen/Geometry>
 #include <cmath>
 
 #include "builder.hpp"
+#include "dda/common/scenario.hpp"
+#include "dda/common/triangle_mesh.hpp"
 #include "dda/dl/dfn3d.hpp"
 #include "dda/dl/polygon3.hpp"
 #include "scenario3d_builder.hpp"
@@ -47,6 +49,35 @@ double volume_in_box(const ConvexRegion& region, const Box3& box) {
     for (std::size_t k = 0; k < planes.size() && face.size() >= 3; ++k)
       if (k != j) face = clip_polygon(face, planes[k], tol);
     volume += (planes[j].offset - planes[j].normal.dot(centre)) * polygon_area(face) / 3;
+  }
+  return volume;
+}
+
+// Volume of the surface's inside within the box, exactly: the winding
+// number at x counts the triangles its upward ray crosses (+1 where it
+// leaves, -1 where it enters), so the volume is the sum over triangles of
+// +-(the part of the box's columns below the triangle) -- the integral of
+// the triangle's height above the box floor, clamped to the box, over its
+// shadow on the box's rectangle.
+double volume_in_box(const TriangleMesh& mesh, const Box3& box) {
+  const double height = box.hi.z() - box.lo.z();
+  const std::vector<HalfSpace> column = {
+      {-Vec3::UnitX(), -box.lo.x()}, {Vec3::UnitX(), box.hi.x()}, {-Vec3::UnitY(), -box.lo.y()}, {Vec3::UnitY(), box.hi.y()}};
+  double volume = 0;
+  for (const auto& t : mesh.triangles) {
+    Polygon3 p{mesh.vertices[static_cast<std::size_t>(t[0])], mesh.vertices[static_cast<std::size_t>(t[1])],
+               mesh.vertices[static_cast<std::size_t>(t[2])]};
+    for (const HalfSpace& h : column) p = clip_polygon(p, h);
+    // Signed shadow areas (the sign of the normal's z) of the parts between
+    // the floor and the roof and above the roof.
+    const Polygon3 above_floor = clip_polygon(p, HalfSpace{-Vec3::UnitZ(), -box.lo.z()});
+    const Polygon3 between = clip_polygon(above_floor, HalfSpace{Vec3::UnitZ(), box.hi.z()});
+    const Polygon3 above_roof = clip_polygon(above_floor, HalfSpace{-Vec3::UnitZ(), -box.hi.z()});
+    volume += height * vector_area(above_roof).z();
+    for (std::size_t i = 1; i + 1 < between.size(); ++i) {
+      const Vec3 &a = between[0], &b = between[i], &c = between[i + 1];
+      volume += 0.5 * (b - a).cross(c - a).z() * ((a.z() + b.z() + c.z()) / 3 - box.lo.z());
+    }
   }
   return volume;
 }
@@ -134,6 +165,26 @@ ConvexRegion read_region(const YamlNode& n, const std::string& shape, nlohmann::
   return r;
 }
 
+// `{shape: surface, file}`: an opening of any shape, inside a closed STL or
+// OBJ surface.
+TriangleMesh read_surface(const YamlNode& root, const YamlNode& n, nlohmann::json& rep) {
+  n.allow({"shape", "name", "file"});
+  // The 2D sections (dl/src/trace_plane.cpp) know only convex openings.
+  if (root.has("trace_planes"))
+    n.fail_key("shape", "surface cannot be sectioned by trace_planes yet (leave out trace_planes, or use a convex shape)");
+  const std::string file = n.text("file");
+  TriangleMesh mesh;
+  try {
+    mesh = read_triangle_mesh(resolve_scenario_path(n, file));
+  } catch (const InputError& e) {
+    fail_from(n, "file", "names a surface file with an error", e);
+  }
+  rep["file"] = file;
+  rep["triangles"] = mesh.triangles.size();
+  rep["volume"] = enclosed_volume(mesh);
+  return mesh;
+}
+
 }  // namespace
 
 void read_excavations3(const YamlNode& root, Builder3& b) {
@@ -141,15 +192,17 @@ void read_excavations3(const YamlNode& root, Builder3& b) {
   const auto items = root.list_or_empty("excavations");
   for (std::size_t i = 0; i < items.size(); ++i) {
     const YamlNode& n = items[i];
-    if (!n.is_map()) n.fail("must be a mapping with a shape (tunnel, box, slope or half_spaces)");
-    const std::string shape = n.choice("shape", {"tunnel", "box", "slope", "half_spaces"});
+    if (!n.is_map()) n.fail("must be a mapping with a shape (tunnel, box, slope, half_spaces or surface)");
+    const std::string shape = n.choice("shape", {"tunnel", "box", "slope", "half_spaces", "surface"});
     Excavation3 ex;
     ex.name = read_name(n, "E", i);
     for (const Excavation3& other : b.model.excavations)
       if (other.name == ex.name) n.fail_key("name", "'" + ex.name + "' is already the name of another excavation");
     nlohmann::json entry = {{"name", ex.name}, {"shape", shape}};
-    ex.region = read_region(n, shape, entry);
-    const double volume = volume_in_box(ex.region, b.model.domain);
+    if (shape == "surface") ex.surface = read_surface(root, n, entry);
+    else ex.region = read_region(n, shape, entry);
+    const double volume =
+        ex.surface ? volume_in_box(*ex.surface, b.model.domain) : volume_in_box(ex.region, b.model.domain);
     if (!(volume > 1e-12 * b.model.domain.volume()))
       n.fail("does not reach into the domain (an excavation must open part of it)");
     entry["half_spaces"] = ex.region.half_spaces.size();

@@ -144,6 +144,13 @@ TraceFrame trace_frame(const Vec3& point, const Vec3& normal) {
 
 LineModel trace_section(const FractureModel& model, const TraceFrame& f) {
   validate_box(model.domain, "The fracture model's domain");
+  // Sections of closed surfaces are not drawn yet: refusing is better than
+  // a section that silently shows the wrong rock.
+  if (model.domain_surface)
+    throw InputError("A trace plane cannot section a model whose domain is a closed surface (only a box) yet.");
+  for (const Excavation3& ex : model.excavations)
+    if (ex.surface)
+      throw InputError("A trace plane cannot section the closed-surface excavation '" + ex.name + "' yet.");
   const Polygon3 section = plane_in_box(f.n, f.n.dot(f.origin), model.domain);
   if (section.empty())
     throw InputError("The trace plane through " + point_text(f.origin) + " misses the model's domain.");

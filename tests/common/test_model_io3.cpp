@@ -12,6 +12,7 @@
 
 #include "dda/common/error.hpp"
 #include "dda/common/model_io.hpp"
+#include "dda/common/triangle_mesh.hpp"
 
 namespace fs = std::filesystem;
 using dda::Vec3;
@@ -77,10 +78,10 @@ std::vector<dda::ModelPoint3> sample_points() {
 dda::FractureModel sample_fractures() {
   dda::FractureModel m;
   m.domain = {Vec3(-1, 0, -2.5), Vec3(10, 20, 30)};
-  dda::Excavation3 tunnel{"tunnel 1", {}};
+  dda::Excavation3 tunnel{"tunnel 1", {}, {}};
   tunnel.region.half_spaces = {{Vec3(1, 0, 0), 6}, {Vec3(-1, 0, 0), -4}, {Vec3(0, 0, 1), 12},
                                {Vec3(0, 0, -2), -16}, {Vec3(0.6, 0, 0.8), 11.1}};
-  dda::Excavation3 air{"open air", {}};
+  dda::Excavation3 air{"open air", {}, {}};
   air.region.half_spaces = {{Vec3(0, -std::sqrt(0.5), std::sqrt(0.5)), 1.0 / 7.0}};
   m.excavations = {tunnel, air};
 
@@ -113,6 +114,28 @@ dda::FractureModel sample_fractures() {
   m.layers = sample_layers();
   m.bed_normal = Vec3(0.1, -0.2, std::sqrt(0.95));
   m.provenance = sample_provenance();
+  return m;
+}
+
+// An octahedron about c with half-diagonal r, triangles facing outward.
+dda::TriangleMesh octahedron(const Vec3& c, double r) {
+  dda::TriangleMesh m;
+  m.vertices = {c + Vec3(r, 0, 0), c - Vec3(r, 0, 0), c + Vec3(0, r, 0),
+                c - Vec3(0, r, 0), c + Vec3(0, 0, r), c - Vec3(0, 0, r)};
+  m.triangles = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+  return m;
+}
+
+// sample_fractures() with a surface domain and two surface excavations,
+// one of them also a region, around a plain one.
+dda::FractureModel sample_with_surfaces() {
+  dda::FractureModel m = sample_fractures();
+  m.domain_surface = octahedron(Vec3(4.5, 10, 13.75), 5.5);
+  m.domain_surface->vertices[0].x() = 10;  // bit-exact values that are not round
+  m.domain_surface->vertices[1].x() = -1.0 / 3.0;
+  dda::Excavation3 cave{"cave", {}, octahedron(Vec3(2, 3, 4), 0.75)};
+  m.excavations.insert(m.excavations.begin(), cave);
+  m.excavations.back().surface = octahedron(Vec3(5, 5, 5), 1e-3);
   return m;
 }
 
@@ -208,10 +231,19 @@ void expect_same_common(const Model& a, const Model& b) {
   expect_same(a.provenance, b.provenance);
 }
 
+void expect_same(const std::optional<dda::TriangleMesh>& a, const std::optional<dda::TriangleMesh>& b) {
+  ASSERT_EQ(a.has_value(), b.has_value());
+  if (!a) return;
+  EXPECT_EQ(a->vertices, b->vertices);
+  EXPECT_EQ(a->triangles, b->triangles);
+}
+
 void expect_same(const dda::FractureModel& a, const dda::FractureModel& b) {
+  expect_same(a.domain_surface, b.domain_surface);
   ASSERT_EQ(a.excavations.size(), b.excavations.size());
   for (std::size_t i = 0; i < a.excavations.size(); ++i) {
     EXPECT_EQ(a.excavations[i].name, b.excavations[i].name);
+    expect_same(a.excavations[i].surface, b.excavations[i].surface);
     const auto &x = a.excavations[i].region.half_spaces, &y = b.excavations[i].region.half_spaces;
     ASSERT_EQ(x.size(), y.size());
     for (std::size_t k = 0; k < x.size(); ++k) {
@@ -272,6 +304,37 @@ TEST_F(ModelIo3Test, FracturesRoundTripAllFields) {
   expect_same(m, dda::read_fractures_h5(path("f.h5")));
   EXPECT_EQ(dda::h5_format_of(path("f.h5")), "dda-fractures");
   EXPECT_EQ(listing(), std::vector<std::string>{"f.h5"});  // no temporary left
+}
+
+TEST_F(ModelIo3Test, SurfacesRoundTrip) {
+  const dda::FractureModel m = sample_with_surfaces();
+  dda::write_fractures_h5(path("f.h5"), m);
+  const dda::FractureModel back = dda::read_fractures_h5(path("f.h5"));
+  expect_same(m, back);
+  EXPECT_FALSE(back.excavations[1].surface.has_value());
+  EXPECT_TRUE(back.excavations[2].surface.has_value());
+}
+
+TEST_F(ModelIo3Test, SurfacesAreCheckedAndTurnedOutwardOnReading) {
+  dda::FractureModel m = sample_with_surfaces();
+  for (auto& t : m.domain_surface->triangles) std::swap(t[0], t[1]);  // inward
+  dda::write_fractures_h5(path("f.h5"), m);
+  const dda::FractureModel back = dda::read_fractures_h5(path("f.h5"));
+  EXPECT_GT(dda::enclosed_volume(*back.domain_surface), 0);
+
+  m = sample_with_surfaces();
+  m.excavations[0].surface->triangles.pop_back();  // a hole
+  dda::write_fractures_h5(path("f.h5"), m);
+  const std::string msg = error_of([&] { dda::read_fractures_h5(path("f.h5")); });
+  EXPECT_EQ(msg.rfind(path("f.h5") + ": the surface of excavation 0 ('cave'): the surface is not closed", 0), 0u)
+      << msg;
+
+  m = sample_with_surfaces();
+  m.domain_surface->triangles[2][1] = 6;  // six vertices: 0..5
+  dda::write_fractures_h5(path("f.h5"), m);
+  EXPECT_EQ(error_of([&] { dda::read_fractures_h5(path("f.h5")); }),
+            path("f.h5") + ": the domain surface in /domain/surface: triangle 3 names vertex 7, which does not "
+                           "exist (there are 6).");
 }
 
 TEST_F(ModelIo3Test, EmptyFractureModelRoundTrips) {

@@ -272,6 +272,30 @@ TEST_F(Vtk3dTest, ObliquePlaneIsCutByTheBox) {
   EXPECT_NEAR(area_vector(h).dot(f.normal) / 2, 3 * std::sqrt(3.0) / 2 * 0.5, 1e-12);  // 3 sqrt(3) / 2 s^2
 }
 
+TEST_F(Vtk3dTest, SurfacesFollowTheFractures) {
+  dda::FractureModel m;
+  m.domain = {Vec3(0, 0, 0), Vec3(1, 1, 1)};
+  dda::TriangleMesh tet;
+  tet.vertices = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)};
+  tet.triangles = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+  m.domain_surface = tet;
+  dda::Excavation3 cave{"cave", {}, tet};
+  m.excavations = {cave, dda::Excavation3{"box", dda::box_region(m.domain), {}}};
+  dda::Fracture3 disc;
+  disc.normal = Vec3(0, 0, 1);
+  disc.centre = Vec3(0.5, 0.5, 0.5);
+  disc.radius = 0.25;
+  m.fractures = {disc};
+  dda::write_fractures_vtu(path("f.vtu"), m);
+  const Vtu v = parse_file(path("f.vtu"));
+  EXPECT_EQ(v.cells, 9u);
+  EXPECT_EQ(v.points, 48u + 24u);
+  EXPECT_EQ(v.text("Cells", "types"), "7 5 5 5 5 5 5 5 5");
+  EXPECT_EQ(v.text("CellData", "set"), "0 -1 -1 -1 -1 -2 -2 -2 -2");
+  EXPECT_EQ(v.text("CellData", "shape"), "1 3 3 3 3 3 3 3 3");
+  EXPECT_EQ(v.text("CellData", "fracture_id"), "0 -1 -1 -1 -1 -1 -1 -1 -1");
+}
+
 TEST_F(Vtk3dTest, EmptyModelsAreValid) {
   dda::write_fractures_vtu(path("f.vtu"), dda::FractureModel{});
   dda::write_polyhedra_vtu(path("b.vtu"), dda::PolyhedronModel{});

@@ -317,6 +317,55 @@ TEST(Cut3d, SeedWedgeHasTheExpectedVolumeAndNormals) {
   EXPECT_NEAR(rad2deg(std::asin(-body.sliding_direction.z())), 27.63, 0.01);
 }
 
+TEST(Cut3d, ADiscEndingInsideTheWedgeDoesNotHoldIt) {
+  // The V4 wedge again, with a disc that crosses the wedge's nose and ends
+  // inside it: the wedge becomes two glued parts of one body, and the faces
+  // between them (a closed crack) must not count as contacts: the body
+  // still slides on A and B.
+  const Vec3 nA = dl::normal_from_dip(51.4, 65.8), nB = dl::normal_from_dip(51.4, 295.2);
+  const Vec3 T(0, 0, 10);
+  FractureModel m = empty_model(Vec3(-20, -5, 0), Vec3(20, 20, 10), 3);
+  m.fractures.push_back(plane(nA, T, 0));
+  m.fractures.push_back(plane(nB, T, 1));
+  m.fractures.push_back(disc(Vec3(0, 1, 0.3), Vec3(0, 8, 7), 1.0, 2));
+  Excavation3 open_air;
+  open_air.region.half_spaces = {{-Vec3::UnitY(), -10}};
+  m.excavations.push_back(open_air);
+  const auto r = cut_blocks_3d(m);
+  int sliding = 0;
+  for (const auto& body : r.model.bodies)
+    if (body.removability == Removability::SlidesTwo) {
+      ++sliding;
+      EXPECT_GE(body.parts.size(), 2u);  // the disc split it into glued parts
+    }
+  EXPECT_EQ(sliding, 1);
+  EXPECT_EQ(r.model.unfinished_cuts, 1);
+}
+
+TEST(Cut3d, CoplanarAndCrossingFiniteFracturesStayValid) {
+  // Degenerate finite input: two overlapping coplanar discs, a disc whose
+  // rim passes through the box's corners, a polygon through an edge, and a
+  // disc whose plane is a face of the box. Every part must be a valid convex
+  // polyhedron and the parts must fill the box.
+  FractureModel m = empty_model(Vec3(0, 0, 0), Vec3(1, 1, 1), 1);
+  m.fractures.push_back(disc(Vec3::UnitZ(), Vec3(0.25, 0.5, 0.5), 0.6));
+  m.fractures.push_back(disc(Vec3::UnitZ(), Vec3(0.75, 0.5, 0.5), 0.6));
+  m.fractures.push_back(disc(Vec3::UnitX(), Vec3(0.5, 0.5, 0.5), std::sqrt(0.5)));  // rim through the corners
+  Fracture3 p = plane(Vec3(1, 1, 0), Vec3(1, 0, 0));  // x + y = 1: through two vertical edges
+  p.shape = FractureShape::Polygon;
+  p.vertices = {Vec3(1.2, -0.2, -0.1), Vec3(-0.2, 1.2, -0.1), Vec3(-0.2, 1.2, 0.7), Vec3(1.2, -0.2, 0.7)};
+  m.fractures.push_back(p);
+  m.fractures.push_back(disc(Vec3::UnitY(), Vec3(0.5, 1, 0.5), 0.3));  // in the face y = 1
+  for (int mode = 0; mode < 2; ++mode) {
+    const auto r = cut_blocks_3d(m, mode == 0 ? Cut3dOptions{} : through_only());
+    for (const auto& b : r.model.blocks) expect_valid(b);
+    EXPECT_NEAR(total_volume(r.model), 1, 1e-12);
+    double bodies = 0;
+    for (const auto& b : r.model.bodies) bodies += b.volume;
+    EXPECT_NEAR(bodies, 1, 1e-12);
+  }
+}
+
 TEST(Cut3d, HolePointRemovesItsBody) {
   FractureModel m = empty_model(Vec3(0, 0, 0), Vec3(2, 1, 1), 1);
   m.fractures.push_back(plane(Vec3::UnitX(), Vec3(1, 0, 0)));

@@ -1,15 +1,18 @@
 #pragma once
 // The fractures file: what DL writes in 3D and DC reads to cut polyhedra.
 //
-// A FractureModel is the whole 3D geometry before cutting: the domain box,
-// the excavations (convex regions), every fracture with the set it belongs
-// to, the beds of a layered rock mass and the named points.
+// A FractureModel is the whole 3D geometry before cutting: the domain box
+// (or a closed surface inside it), the excavations (convex regions or closed
+// surfaces), every fracture with the set it belongs to, the beds of a
+// layered rock mass and the named points.
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "dda/common/geometry3.hpp"
 #include "dda/common/line_model.hpp"  // JointSetInfo, LineKind, Layer, PointKind, set ids
 #include "dda/common/provenance.hpp"
+#include "dda/common/triangle_mesh.hpp"
 
 namespace dda {
 
@@ -43,13 +46,19 @@ struct ModelPoint3 {
   Vec3 p{0, 0, 0};
 };
 
+// The opened volume is what lies inside the region (if it has half-spaces)
+// or inside the surface (if there is one): their union.
 struct Excavation3 {
   std::string name;
-  ConvexRegion region;          // the opened volume
+  ConvexRegion region;
+  std::optional<TriangleMesh> surface{};  // closed, triangles facing out of the opening
 };
 
 struct FractureModel {
   Box3 domain;
+  // The rock is what lies inside this closed surface (triangles facing out
+  // of the rock), when given; `domain` then holds it (its bounding box).
+  std::optional<TriangleMesh> domain_surface{};
   std::vector<Excavation3> excavations;
   std::vector<Fracture3> fractures;
   std::vector<JointSetInfo> sets;   // index = Fracture3::set

@@ -14,7 +14,9 @@ inline constexpr int kDiscPolygonSides = 48;
 // One VTK_POLYGON cell per fracture: a disc as a regular 48-gon, a polygon
 // as itself, a plane clipped to the domain box (a plane that misses the box,
 // or any fracture with a zero normal, gives no cell). Cell data: set, kind,
-// shape, layer, fracture_id (index into model.fractures).
+// shape, layer, fracture_id (index into model.fractures). Then one
+// VTK_TRIANGLE per triangle of the domain's surface (set -1) and of the
+// excavations' surfaces (set -2), with shape 3 and fracture_id -1.
 void write_fractures_vtu(const std::string& path, const FractureModel& model);
 
 // One VTK_POLYHEDRON cell per block. Cell data: block_id, body, volume,

@@ -18,9 +18,11 @@
 //       Every block is then convex, but a network of fractures smaller than
 //       the blocks cuts nothing.
 //     Fractures that end inside a body are counted in `unfinished_cuts`.
-//  3. Excavations (convex regions) remove what lies inside them. A block
-//     partly inside keeps the parts outside as convex pieces glued along
-//     kArtificialSet faces: one body, flagged exposed.
+//  3. A closed-surface domain (STL/OBJ) keeps what lies inside it, and
+//     excavations (convex regions or closed surfaces) remove what lies
+//     inside them. A block partly inside keeps its parts as convex pieces
+//     glued along kArtificialSet faces: one body (flagged exposed next to an
+//     excavation).
 //  4. Hole points remove the body that contains them.
 //  5. Each exposed body is classified by block theory (removability.hpp).
 #include <nlohmann/json.hpp>
@@ -38,10 +40,11 @@ enum class FiniteFractures { Glue, Through };
 
 struct Cut3dOptions {
   FiniteFractures finite_fractures = FiniteFractures::Glue;
-  // Faces of the domain box that are free surfaces rather than rock that
-  // goes on beyond the model, by name: "x-", "x+", "y-", "y+", "z-", "z+".
-  // Default: the ground surface "z+".
-  std::vector<std::string> free_boundaries{"z+"};
+  // Faces of the domain that are free surfaces rather than rock that goes
+  // on beyond the model, by name: the box's "x-", "x+", "y-", "y+", "z-",
+  // "z+", and "surface" for the faces of a closed-surface domain that are
+  // not on its bounding box. Default: the ground, "z+" and "surface".
+  std::vector<std::string> free_boundaries{"z+", "surface"};
   Vec3 gravity_direction{0, 0, -1};
   // Vertices closer than this (m) to a cutting plane count as on it, so
   // that planes meant to pass through one point or line do; a cut that
