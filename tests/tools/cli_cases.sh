@@ -471,5 +471,52 @@ case_dl3_bad_key() {
     "$DDA" dl scenario.yaml -o l.h5
 }
 
+case_dc3d_stats_plot_info() {
+  copy_s3d
+  "$DDA" dl s3d_small.yaml -o fr.h5 -q || fail "dl"
+  "$DDA" dc fr.h5 -o b3.h5 --vtk b3.vtu --report r.json > out.txt || fail "dc of a fractures file"
+  grep -qE "^[0-9]+ bodies \([0-9]+ convex parts, total volume [0-9.]+ m\^3\) written to b3.h5$" out.txt \
+    || fail "dc printed: $(cat out.txt)"
+  [ -s b3.vtu ] || fail "b3.vtu missing"
+  grep -q 'type="Int64" Name="faces"' b3.vtu || grep -q 'Name="faces"' b3.vtu || fail "no polyhedron faces in b3.vtu"
+  "$DDA" stats b3.h5 --json > s.json || fail "stats"
+  # The 10 m cube minus the tunnel: a 16-gon prism of radius 1.5 m, 10 m long.
+  json_get s.json "d['dimension'] == 3 and abs(d['total_volume'] + d['excavated_volume'] - 1000) < 1e-9 * 1000 and abs(d['excavated_volume'] - 80 * 1.5**2 * __import__('math').sin(__import__('math').pi / 8)) < 1e-9 * 1000" \
+    | grep -q True || fail "volumes $(json_get s.json "(d['total_volume'], d['excavated_volume'])")"
+  "$DDA" stats b3.h5 | grep -q "block theory:" || fail "no block theory in the text summary"
+  "$DDA" info b3.h5 | grep -qE "dda-blocks3d, [0-9]+ bodies" || fail "info"
+  "$DDA" info fr.h5 | grep -qE "dda-fractures, [0-9]+ fractures" || fail "info of fractures"
+  "$DDA" plot b3.h5 -o b3.png --view 20 30 --explode 0.2 --color body -q || fail "plot 3D blocks"
+  "$DDA" plot fr.h5 -o fr.png -q || fail "plot fractures"
+  [ -s b3.png ] && [ -s fr.png ] || fail "figures missing"
+  # through: finite fractures that end inside a block leave it whole, so
+  # fewer convex parts than glue (which splits and glues them).
+  "$DDA" dc fr.h5 -o t.h5 --finite-fractures through --report t.json -q || fail "dc through"
+  "$DDA" stats t.h5 --json > t_s.json
+  json_get t.json "d['finite_fractures_mode'] == 'through'" | grep -q True || fail "the option was not used"
+  [ "$(json_get t_s.json "d['blocks']")" -lt "$(json_get s.json "d['blocks']")" ] || fail "through split as much as glue"
+  expect_error 1 "^dda: --min-area, --max-aspect and --slivers apply to 2D cuts; fr.h5 is a 3D fractures file\.$" -- \
+    "$DDA" dc fr.h5 -o x.h5 --min-area 1
+  "$DDA" trace fr.h5 --point 5 5 5 --dip 90 --dip-direction 90 -o sec.h5 -q
+  expect_error 1 "^dda: --finite-fractures applies to 3D cuts; sec.h5 is not a fractures file\.$" -- \
+    "$DDA" dc sec.h5 -o x.h5 --finite-fractures glue
+  [ ! -e x.h5 ] || fail "an output was written despite the error"
+}
+
+case_run3d_writes_everything() {
+  copy_s3d
+  "$DDA" run s3d_small.yaml -o out > log.txt || fail "run of a 3D scenario: $(cat log.txt)"
+  for f in fractures.h5 blocks3d.h5 dl_report.json dc_report.json stats.json sections/mid.lines.h5 \
+           sections/mid.blocks.h5 vtk/fractures.vtu vtk/blocks3d.vtu vtk/model.pvd figures/fractures.png \
+           figures/blocks3d.png figures/blocks3d_exploded.png; do
+    [ -s "out/$f" ] || fail "out/$f missing"
+  done
+  "$DDA" run s3d_small.yaml -o out2 --no-plots --no-vtk -q || fail "run without plots"
+  [ ! -e out2/figures ] && [ ! -e out2/vtk ] || fail "--no-plots/--no-vtk ignored"
+  cmp -s out/stats.json out2/stats.json || fail "the same scenario gave other statistics"
+  expect_error 1 "^dda: --min-area, --max-aspect and --slivers apply to 2D cuts; s3d_small.yaml is a 3D scenario\.$" -- \
+    "$DDA" run s3d_small.yaml -o out3 --min-area 1
+}
+
 "case_$CASE"
 echo "PASS [$CASE]"

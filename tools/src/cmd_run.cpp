@@ -6,7 +6,7 @@
 // section is then run forward (DF) into results.h5 and
 // vtk/{df.pvd, df_blocks_*.vtu, df_contacts_*.vtu}. The whole scenario is
 // checked before the first stage runs, so a typo in a late section fails at
-// once.
+// once. A scenario with dimension: 3 runs the 3D pipeline (run3d.cpp).
 #include <filesystem>
 
 #include "commands.hpp"
@@ -16,7 +16,9 @@
 #include "dda/common/vtk.hpp"
 #include "dda/dc/stats.hpp"
 #include "dda/df/scenario.hpp"
+#include "dda/dc/cut3d.hpp"
 #include "dda/dl/generate.hpp"
+#include "dda/dl/scenario3d.hpp"
 #include "pipeline.hpp"
 #include "plot_runner.hpp"
 
@@ -66,6 +68,17 @@ void add_run_command(CLI::App& app, const GlobalOptions& global) {
     if (!fs::exists(opt->scenario)) throw InputError(opt->scenario + ": no such file.");
     const YamlNode root = load_scenario(opt->scenario);
     OutputOptions out = parse_output_options(root);
+    if (dl::scenario_dimension(root) == 3) {
+      if (opt->slivers.min_area || opt->slivers.max_aspect || opt->slivers.action)
+        throw InputError("--min-area, --max-aspect and --slivers apply to 2D cuts; " + opt->scenario +
+                         " is a 3D scenario.");
+      dc::parse_cut3d_options(root.optional_child("cutting"));  // check before any stage runs
+      if (opt->no_plots) out.plots = false;
+      if (opt->no_vtk) out.vtk = false;
+      make_dir(fs::path(opt->outdir));
+      run_pipeline_3d(root, fs::path(opt->outdir), out, global.quiet);
+      return;
+    }
     dc::CutOptions cut_options = dc::parse_cut_options(root.optional_child("cutting"));
     apply(opt->slivers, cut_options);
     df::check_df_scenario(root);

@@ -2,6 +2,7 @@
 // Subcommands of the `dda` program. Each registers itself on the app with
 // its options and a callback; main() only dispatches and reports errors.
 #include <CLI/CLI.hpp>
+#include <filesystem>
 #include <optional>
 #include <string>
 
@@ -42,6 +43,10 @@ struct OutputOptions {
   bool vtk_contacts = true;        // DF: write the contacts series next to the blocks series
 };
 OutputOptions parse_output_options(const YamlNode& root);
+
+// `dda run` on a 3D scenario (run3d.cpp): DL, the trace-plane sections cut
+// in 2D, DC, statistics, ParaView files and figures into `dir`.
+void run_pipeline_3d(const YamlNode& root, const std::filesystem::path& dir, const OutputOptions& out, bool quiet);
 
 // The DF stage (cmd_df.cpp), as `dda df` and `dda run` use it.
 struct DfStage {
