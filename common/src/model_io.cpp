@@ -2,22 +2,34 @@
 // by dataset, in docs/formats.md; keep the two in step.
 #include "dda/common/model_io.hpp"
 
-#include <cmath>
-#include <ctime>
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <memory>
 
 #include "dda/common/atomic_file.hpp"
 #include "dda/common/error.hpp"
 #include "dda/common/h5_util.hpp"
+#include "model_io_detail.hpp"
 
 namespace dda {
 namespace {
 
+// The helpers every HDF5 file of the pipeline shares (model_io_detail.hpp).
+using io::check_finite;
+using io::check_format;
+using io::read_ints;
+using io::read_provenance;
+using io::read_sets;
+using io::read_strings;
+using io::read_vector;
+using io::root_number;
+using io::shape_text;
+using io::write_root_attributes;
+using io::write_sets;
+
 constexpr const char* kLinesFormat = "dda-lines";
 constexpr const char* kBlocksFormat = "dda-blocks";
-constexpr int kFormatVersion = 1;
 constexpr const char* kUnits = "SI: lengths m, areas m^2, second moments m^4, angles deg";
 constexpr const char* kPointKindCodes = "0 fixed, 1 load, 2 measurement, 3 hole";
 constexpr const char* kLineKindCodes = "0 joint, 1 bedding";
@@ -25,29 +37,7 @@ constexpr const char* kSetCodes =
     "joint set index (0, 1, ...; see /sets), -1 domain boundary, -2 excavation outline, "
     "-3 artificial cut";
 
-std::string utc_now() {
-  const std::time_t t = std::time(nullptr);
-  std::tm tm{};
-  gmtime_r(&t, &tm);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
-  return buf;
-}
-
 // ------------------------------------------------------------------ writing
-
-void write_root_attributes(h5::Writer& w, const char* format, const Provenance& p) {
-  const hid_t root = w.file();
-  w.attr_text(root, "format", format);
-  w.attr_i32(root, "format_version", kFormatVersion);
-  w.attr_text(root, "units", kUnits);
-  w.attr_text(root, "program_version",
-              p.program_version.empty() ? std::string(version_string()) : p.program_version);
-  w.attr_text(root, "scenario_path", p.scenario_path);
-  w.attr_text(root, "scenario", p.scenario_text);
-  w.attr_u64(root, "seed", p.seed);
-  w.attr_text(root, "created_utc", p.created_utc.empty() ? utc_now() : p.created_utc);
-}
 
 std::vector<double> flatten(const Polygon2& poly) {
   std::vector<double> xy;
@@ -57,18 +47,6 @@ std::vector<double> flatten(const Polygon2& poly) {
     xy.push_back(v.y());
   }
   return xy;
-}
-
-void write_sets(h5::Writer& w, const std::vector<JointSetInfo>& sets) {
-  h5::Id g = w.group("sets");
-  std::vector<std::string> names, origins;
-  for (const JointSetInfo& s : sets) {
-    names.push_back(s.name);
-    origins.push_back(s.origin);
-  }
-  w.strings(g.get(), "name", names, "", "name of joint set i (UTF-8); index = set id");
-  w.strings(g.get(), "origin", origins, "",
-            "how set i was made: statistical, layered, user, csv, geo or bedding");
 }
 
 // `blocks` is empty for a lines file (no /points/block dataset then).
@@ -115,41 +93,6 @@ void write_layers(h5::Writer& w, const std::vector<Layer>& layers) {
 
 // ------------------------------------------------------------------ reading
 
-void check_format(const h5::Reader& r, const std::string& expected) {
-  const auto format = r.attr_text(r.file(), "format", "the file");
-  if (!format)
-    r.fail("is an HDF5 file but not one written by dda (no format attribute), expected a " +
-           expected + " file");
-  if (*format != expected) r.fail("is a " + *format + " file, expected a " + expected + " file");
-  const auto version = r.attr_int(r.file(), "format_version", "the file");
-  if (!version) r.fail("has no format_version attribute");
-  if (*version < 1 || *version > kFormatVersion)
-    r.fail("has format_version " + std::to_string(*version) + ", this dda reads version " +
-           std::to_string(kFormatVersion) + " (a newer dda wrote it?)");
-}
-
-Provenance read_provenance(const h5::Reader& r) {
-  Provenance p;
-  const hid_t f = r.file();
-  p.program_version = r.attr_text(f, "program_version", "the file").value_or("");
-  p.scenario_path = r.attr_text(f, "scenario_path", "the file").value_or("");
-  p.scenario_text = r.attr_text(f, "scenario", "the file").value_or("");
-  p.seed = r.attr_u64(f, "seed", "the file").value_or(0);
-  p.created_utc = r.attr_text(f, "created_utc", "the file").value_or("");
-  return p;
-}
-
-std::string shape_text(const std::vector<hsize_t>& dims) {
-  std::string s = "(";
-  for (std::size_t i = 0; i < dims.size(); ++i) s += (i ? ", " : "") + std::to_string(dims[i]);
-  return s + (dims.size() == 1 ? ",)" : ")");
-}
-
-void check_finite(const h5::Reader& r, const std::string& ds, const std::vector<double>& v) {
-  for (double x : v)
-    if (!std::isfinite(x)) r.fail("dataset " + ds + " holds a value that is not a finite number");
-}
-
 // An n x cols matrix of doubles; returns the number of rows.
 std::vector<double> read_matrix(const h5::Reader& r, const std::string& ds, hsize_t cols,
                                 std::size_t& rows, const char* rows_name) {
@@ -162,45 +105,6 @@ std::vector<double> read_matrix(const h5::Reader& r, const std::string& ds, hsiz
   return std::move(a.data);
 }
 
-// A 1-D dataset of exactly `n` values (one per `what`).
-std::vector<double> read_vector(const h5::Reader& r, const std::string& ds, std::size_t n,
-                                const std::string& what) {
-  h5::Array<double> a = r.f64(ds);
-  if (a.dims.size() != 1 || a.dims[0] != n)
-    r.fail("dataset " + ds + " has shape " + shape_text(a.dims) + ", expected (" +
-           std::to_string(n) + ",), one value per " + what);
-  return std::move(a.data);
-}
-
-std::vector<int> read_ints(const h5::Reader& r, const std::string& ds, std::size_t n,
-                           const std::string& what, long long lo, long long hi) {
-  h5::Array<std::int64_t> a = r.i64(ds);
-  if (a.dims.size() != 1 || a.dims[0] != n)
-    r.fail("dataset " + ds + " has shape " + shape_text(a.dims) + ", expected (" +
-           std::to_string(n) + ",), one value per " + what);
-  std::vector<int> out;
-  out.reserve(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const std::int64_t v = a.data[i];
-    if (v < lo || v > hi)
-      r.fail("dataset " + ds + " entry " + std::to_string(i) + " is " + std::to_string(v) +
-             ", must be between " + std::to_string(lo) + " and " + std::to_string(hi));
-    out.push_back(static_cast<int>(v));
-  }
-  return out;
-}
-
-std::vector<std::string> read_strings(const h5::Reader& r, const std::string& ds, std::size_t n,
-                                      const std::string& what) {
-  std::vector<std::string> s = r.strings(ds);
-  if (s.size() != n)
-    r.fail("dataset " + ds + " has " + std::to_string(s.size()) + " entries, expected " +
-           std::to_string(n) + ", one per " + what);
-  return s;
-}
-
-// Polygons stored as vertices (V x 2) + offsets (P + 1): polygon i is rows
-// offsets[i] .. offsets[i+1]-1. Every polygon has at least 3 vertices.
 std::vector<Polygon2> read_polygons(const h5::Reader& r, const std::string& group,
                                     std::vector<double>* flat_out = nullptr) {
   std::size_t nv = 0;
@@ -228,15 +132,6 @@ std::vector<Polygon2> read_polygons(const h5::Reader& r, const std::string& grou
   }
   if (flat_out) *flat_out = std::move(xy);
   return polys;
-}
-
-std::vector<JointSetInfo> read_sets(const h5::Reader& r) {
-  std::vector<JointSetInfo> sets;
-  if (!r.exists("/sets")) return sets;
-  std::vector<std::string> names = r.strings("/sets/name");
-  std::vector<std::string> origins = read_strings(r, "/sets/origin", names.size(), "set");
-  for (std::size_t i = 0; i < names.size(); ++i) sets.push_back({names[i], origins[i]});
-  return sets;
 }
 
 std::vector<ModelPoint> read_points(const h5::Reader& r) {
@@ -276,12 +171,6 @@ std::vector<Layer> read_layers(const h5::Reader& r) {
   return layers;
 }
 
-double root_number(const h5::Reader& r, const char* name) {
-  const double v = r.attr_f64(r.file(), name, "the file").value_or(0.0);
-  if (!std::isfinite(v)) r.fail(std::string("attribute ") + name + " is not a finite number");
-  return v;
-}
-
 constexpr long long kIntMax = std::numeric_limits<int>::max();
 
 }  // namespace
@@ -292,7 +181,7 @@ void write_lines_h5(const std::string& path, const LineModel& model) {
   AtomicOutput out(path);
   {
     h5::Writer w(path, out.temp_path());
-    write_root_attributes(w, kLinesFormat, model.provenance);
+    write_root_attributes(w, kLinesFormat, kUnits, model.provenance);
     w.attr_f64(w.file(), "bedding_dip_deg", model.bedding_dip_deg);
     {
       h5::Id g = w.group("domain");
@@ -383,7 +272,7 @@ void write_blocks_h5(const std::string& path, const BlockModel& model) {
   AtomicOutput out(path);
   {
     h5::Writer w(path, out.temp_path());
-    write_root_attributes(w, kBlocksFormat, model.provenance);
+    write_root_attributes(w, kBlocksFormat, kUnits, model.provenance);
     w.attr_f64(w.file(), "bedding_dip_deg", model.bedding_dip_deg);
     w.attr_f64(w.file(), "domain_area", model.domain_area);
     w.attr_f64(w.file(), "excavated_area", model.excavated_area);

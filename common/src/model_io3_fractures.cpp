@@ -6,7 +6,7 @@
 #include "dda/common/atomic_file.hpp"
 #include "dda/common/error.hpp"
 #include "dda/common/model_io3.hpp"
-#include "model_io3_detail.hpp"
+#include "model_io_detail.hpp"
 
 namespace dda {
 namespace {
@@ -40,7 +40,7 @@ void write_domain_surface(h5::Writer& w, const std::string& shown, const std::op
   std::vector<Vec3> vertices;
   std::vector<std::int32_t> ids;
   append_mesh(*surface, vertices, ids);
-  w.f64(g.get(), "vertices", io3::flatten(vertices), {vertices.size(), 3}, "m",
+  w.f64(g.get(), "vertices", io::flatten(vertices), {vertices.size(), 3}, "m",
         "vertices x, y, z of the closed surface that bounds the rock");
   write_triangles(w, shown, g.get(), "triangles", ids,
                   "vertex ids (rows of vertices, from 0) of each triangle, counter-clockwise seen from outside the rock");
@@ -68,7 +68,7 @@ void write_excavations(h5::Writer& w, const std::string& shown, const std::vecto
         "one excavation after another; the excavation is their intersection");
   w.i64(g.get(), "offsets", offsets, "",
         "excavation i is half_spaces[offsets[i]:offsets[i+1]]; E+1 entries");
-  w.f64(g.get(), "mesh_vertices", io3::flatten(mesh_vertices), {mesh_vertices.size(), 3}, "m",
+  w.f64(g.get(), "mesh_vertices", io::flatten(mesh_vertices), {mesh_vertices.size(), 3}, "m",
         "vertices of the closed surfaces of the excavations that have one, one excavation after another");
   w.i64(g.get(), "mesh_vertex_offsets", vertex_offsets, "",
         "excavation i has mesh_vertices[mesh_vertex_offsets[i]:mesh_vertex_offsets[i+1]]; E+1 entries");
@@ -99,16 +99,16 @@ void write_fractures(h5::Writer& w, const std::vector<Fracture3>& fractures) {
   }
   const hsize_t n = fractures.size();
   w.i32(g.get(), "shape", shape, "", "shape of fracture i: 0 plane, 1 disc, 2 polygon");
-  w.f64(g.get(), "normal", io3::flatten(normal), {n, 3}, "1",
+  w.f64(g.get(), "normal", io::flatten(normal), {n, 3}, "1",
         "unit normal x, y, z of fracture i (upper hemisphere)");
-  w.f64(g.get(), "centre", io3::flatten(centre), {n, 3}, "m",
+  w.f64(g.get(), "centre", io::flatten(centre), {n, 3}, "m",
         "a point of the plane of fracture i: the disc centre, polygon centroid, or any point");
   w.f64(g.get(), "radius", radius, {n}, "m", "radius of a disc fracture (0 for other shapes)");
-  w.f64(g.get(), "vertices", io3::flatten(vertices), {vertices.size(), 3}, "m",
+  w.f64(g.get(), "vertices", io::flatten(vertices), {vertices.size(), 3}, "m",
         "vertices of the polygon fractures, counter-clockwise about the normal, one after another");
   w.i64(g.get(), "offsets", offsets, "",
         "fracture i has vertices[offsets[i]:offsets[i+1]] (none unless a polygon); F+1 entries");
-  w.i32(g.get(), "set", set, "", std::string("joint set of fracture i: ") + io3::kSetCodes);
+  w.i32(g.get(), "set", set, "", std::string("joint set of fracture i: ") + io::kSetCodes);
   w.i32(g.get(), "kind", kind, "", "kind of fracture i: 0 joint, 1 bedding");
   w.i32(g.get(), "layer", layer, "",
         "bed fracture i was generated in (index into /layers), -1 if none");
@@ -146,8 +146,8 @@ std::optional<TriangleMesh> read_domain_surface(const h5::Reader& r) {
   if (!r.exists("/domain/surface")) return std::nullopt;
   TriangleMesh m;
   std::size_t nv = 0;
-  const std::vector<double> xyz = io3::read_table(r, "/domain/surface/vertices", 3, nv);
-  for (std::size_t i = 0; i < nv; ++i) m.vertices.push_back(io3::row3(xyz, i));
+  const std::vector<double> xyz = io::read_table(r, "/domain/surface/vertices", 3, nv);
+  for (std::size_t i = 0; i < nv; ++i) m.vertices.push_back(io::row3(xyz, i));
   m.triangles = read_triangles(r, "/domain/surface/triangles");
   return checked_mesh(r, std::move(m), "the domain surface in /domain/surface");
 }
@@ -157,12 +157,12 @@ std::vector<Excavation3> read_excavations(const h5::Reader& r) {
   if (!r.exists("/excavations")) return out;
   std::vector<std::string> names = r.strings("/excavations/name");
   std::size_t nh = 0;
-  const std::vector<double> planes = io3::read_table(r, "/excavations/half_spaces", 4, nh);
+  const std::vector<double> planes = io::read_table(r, "/excavations/half_spaces", 4, nh);
   // An excavation may be a surface alone; files without meshes (older ones)
   // need a half-space for each.
   const bool meshes = r.exists("/excavations/mesh_triangles");
   const std::vector<std::int64_t> off =
-      io3::read_offsets(r, "/excavations/offsets", nh, meshes ? 0 : 1, "excavation");
+      io::read_offsets(r, "/excavations/offsets", nh, meshes ? 0 : 1, "excavation");
   if (off.size() != names.size() + 1)
     r.fail("dataset /excavations/offsets has " + std::to_string(off.size()) +
            " entries, expected " + std::to_string(names.size() + 1) +
@@ -172,10 +172,10 @@ std::vector<Excavation3> read_excavations(const h5::Reader& r) {
   std::vector<std::array<int, 3>> tris;
   std::vector<std::int64_t> voff(names.size() + 1, 0), toff(names.size() + 1, 0);
   if (meshes) {
-    xyz = io3::read_table(r, "/excavations/mesh_vertices", 3, nv);
+    xyz = io::read_table(r, "/excavations/mesh_vertices", 3, nv);
     tris = read_triangles(r, "/excavations/mesh_triangles");
-    voff = io3::read_offsets(r, "/excavations/mesh_vertex_offsets", nv, 0, "excavation");
-    toff = io3::read_offsets(r, "/excavations/mesh_triangle_offsets", tris.size(), 0, "excavation");
+    voff = io::read_offsets(r, "/excavations/mesh_vertex_offsets", nv, 0, "excavation");
+    toff = io::read_offsets(r, "/excavations/mesh_triangle_offsets", tris.size(), 0, "excavation");
     if (voff.size() != names.size() + 1 || toff.size() != names.size() + 1)
       r.fail("datasets /excavations/mesh_vertex_offsets and /excavations/mesh_triangle_offsets must have " +
              std::to_string(names.size() + 1) + " entries, one more than /excavations/name");
@@ -189,7 +189,7 @@ std::vector<Excavation3> read_excavations(const h5::Reader& r) {
     if (toff[i + 1] > toff[i]) {
       TriangleMesh m;
       for (auto k = static_cast<std::size_t>(voff[i]); k < static_cast<std::size_t>(voff[i + 1]); ++k)
-        m.vertices.push_back(io3::row3(xyz, k));
+        m.vertices.push_back(io::row3(xyz, k));
       m.triangles.assign(tris.begin() + toff[i], tris.begin() + toff[i + 1]);
       e.surface = checked_mesh(r, std::move(m), "the surface of excavation " + std::to_string(i) + " ('" + e.name + "')");
     } else if (e.region.half_spaces.empty()) {
@@ -201,30 +201,30 @@ std::vector<Excavation3> read_excavations(const h5::Reader& r) {
 }
 
 std::vector<Fracture3> read_fractures(const h5::Reader& r, long long nsets, long long nlayers) {
-  const std::vector<int> shape = io3::read_int_list(r, "/fractures/shape", 0, 2);
+  const std::vector<int> shape = io::read_int_list(r, "/fractures/shape", 0, 2);
   const std::size_t n = shape.size();
-  const std::vector<double> normal = io3::read_rows(r, "/fractures/normal", n, 3, "fracture");
-  const std::vector<double> centre = io3::read_rows(r, "/fractures/centre", n, 3, "fracture");
-  const std::vector<double> radius = io3::read_vector(r, "/fractures/radius", n, "fracture");
+  const std::vector<double> normal = io::read_rows(r, "/fractures/normal", n, 3, "fracture");
+  const std::vector<double> centre = io::read_rows(r, "/fractures/centre", n, 3, "fracture");
+  const std::vector<double> radius = io::read_vector(r, "/fractures/radius", n, "fracture");
   std::size_t nv = 0;
-  const std::vector<double> xyz = io3::read_table(r, "/fractures/vertices", 3, nv);
+  const std::vector<double> xyz = io::read_table(r, "/fractures/vertices", 3, nv);
   const std::vector<std::int64_t> off =
-      io3::read_offsets(r, "/fractures/offsets", nv, 0, "fracture");
+      io::read_offsets(r, "/fractures/offsets", nv, 0, "fracture");
   if (off.size() != n + 1)
     r.fail("dataset /fractures/offsets has " + std::to_string(off.size()) + " entries, expected " +
            std::to_string(n + 1) + ", one more than the fractures");
   const std::vector<int> set =
-      io3::read_ints(r, "/fractures/set", n, "fracture", kArtificialSet, nsets - 1);
-  const std::vector<int> kind = io3::read_ints(r, "/fractures/kind", n, "fracture", 0, 1);
+      io::read_ints(r, "/fractures/set", n, "fracture", kArtificialSet, nsets - 1);
+  const std::vector<int> kind = io::read_ints(r, "/fractures/kind", n, "fracture", 0, 1);
   const std::vector<int> layer =
-      io3::read_ints(r, "/fractures/layer", n, "fracture", -1, nlayers - 1);
+      io::read_ints(r, "/fractures/layer", n, "fracture", -1, nlayers - 1);
 
   std::vector<Fracture3> out(n);
   for (std::size_t i = 0; i < n; ++i) {
     Fracture3& f = out[i];
     f.shape = static_cast<FractureShape>(shape[i]);
-    f.normal = io3::row3(normal, i);
-    f.centre = io3::row3(centre, i);
+    f.normal = io::row3(normal, i);
+    f.centre = io::row3(centre, i);
     f.radius = radius[i];
     const auto a = static_cast<std::size_t>(off[i]), b = static_cast<std::size_t>(off[i + 1]);
     // A polygon needs an outline; a plane or disc has none.
@@ -235,7 +235,7 @@ std::vector<Fracture3> read_fractures(const h5::Reader& r, long long nsets, long
              (polygon ? "a polygon needs at least 3" : "only polygons have vertices") + ")");
     if (f.radius < 0)
       r.fail("fracture " + std::to_string(i) + " has a negative radius in /fractures/radius");
-    for (std::size_t k = a; k < b; ++k) f.vertices.push_back(io3::row3(xyz, k));
+    for (std::size_t k = a; k < b; ++k) f.vertices.push_back(io::row3(xyz, k));
     f.set = set[i];
     f.kind = static_cast<LineKind>(kind[i]);
     f.layer = layer[i];
@@ -249,14 +249,14 @@ void write_fractures_h5(const std::string& path, const FractureModel& model) {
   AtomicOutput out(path);
   {
     h5::Writer w(path, out.temp_path());
-    io3::write_root_attributes(w, kFracturesFormat, model.provenance);
-    io3::write_domain(w, model.domain);
+    io::write_root_attributes(w, kFracturesFormat, io::kUnits3d, model.provenance);
+    io::write_domain(w, model.domain);
     write_domain_surface(w, path, model.domain_surface);
     write_excavations(w, path, model.excavations);
     write_fractures(w, model.fractures);
-    io3::write_sets(w, model.sets);
-    io3::write_points(w, model.points);
-    io3::write_layers(w, model.layers, model.bed_normal);
+    io::write_sets(w, model.sets);
+    io::write_points(w, model.points);
+    io::write_layers(w, model.layers, model.bed_normal);
     w.close();
   }
   out.commit();
@@ -264,14 +264,14 @@ void write_fractures_h5(const std::string& path, const FractureModel& model) {
 
 FractureModel read_fractures_h5(const std::string& path) {
   h5::Reader r(path);
-  io3::check_format(r, kFracturesFormat);
+  io::check_format(r, kFracturesFormat);
   FractureModel m;
-  m.provenance = io3::read_provenance(r);
-  m.domain = io3::read_domain(r);
+  m.provenance = io::read_provenance(r);
+  m.domain = io::read_domain(r);
   m.domain_surface = read_domain_surface(r);
-  m.sets = io3::read_sets(r);
-  m.points = io3::read_points(r);
-  m.layers = io3::read_layers(r, m.bed_normal);
+  m.sets = io::read_sets(r);
+  m.points = io::read_points(r);
+  m.layers = io::read_layers(r, m.bed_normal);
   m.excavations = read_excavations(r);
   m.fractures = read_fractures(r, static_cast<long long>(m.sets.size()),
                                static_cast<long long>(m.layers.size()));

@@ -10,7 +10,7 @@
 
 #include "dda/common/atomic_file.hpp"
 #include "dda/common/model_io3.hpp"
-#include "model_io3_detail.hpp"
+#include "model_io_detail.hpp"
 
 namespace dda {
 namespace {
@@ -46,14 +46,14 @@ void write_blocks(h5::Writer& w, const std::vector<Polyhedron>& blocks) {
   const hsize_t nb = blocks.size(), nf = face_normal.size();
   {
     h5::Id g = w.group("blocks");
-    w.f64(g.get(), "vertices", io3::flatten(vertices), {vertices.size(), 3}, "m",
+    w.f64(g.get(), "vertices", io::flatten(vertices), {vertices.size(), 3}, "m",
           "vertices x, y, z of all blocks, one block after another");
     w.i64(g.get(), "vertex_offsets", vertex_offsets, "",
           "block i has vertices[vertex_offsets[i]:vertex_offsets[i+1]]; B+1 entries");
     w.i64(g.get(), "face_offsets", face_offsets, "",
           "block i has the faces face_offsets[i] .. face_offsets[i+1]-1 of /faces; B+1 entries");
     w.f64(g.get(), "volume", volume, {nb}, "m^3", "volume of block i");
-    w.f64(g.get(), "centroid", io3::flatten(centroid), {nb, 3}, "m", "centroid x, y, z of block i");
+    w.f64(g.get(), "centroid", io::flatten(centroid), {nb, 3}, "m", "centroid x, y, z of block i");
     w.f64(g.get(), "second_moment", moment, {nb, 3, 3}, "m^5",
           "integral of (x-c)(x-c)^T over block i, c its centroid (a symmetric 3 x 3 matrix)");
     w.i32(g.get(), "body", body, "", "rock body block i is a convex part of (index into /bodies)");
@@ -66,9 +66,9 @@ void write_blocks(h5::Writer& w, const std::vector<Polyhedron>& blocks) {
           "local to the block (0 is its first vertex)");
     w.i64(g.get(), "offsets", face_vertex_offsets, "",
           "face j has vertices[offsets[j]:offsets[j+1]]; F+1 entries");
-    w.f64(g.get(), "normal", io3::flatten(face_normal), {nf, 3}, "1",
+    w.f64(g.get(), "normal", io::flatten(face_normal), {nf, 3}, "1",
           "unit outward normal x, y, z of face j");
-    w.i32(g.get(), "set", face_set, "", std::string("joint set of face j: ") + io3::kSetCodes);
+    w.i32(g.get(), "set", face_set, "", std::string("joint set of face j: ") + io::kSetCodes);
   }
 }
 
@@ -92,42 +92,42 @@ void write_bodies(h5::Writer& w, const std::vector<Body3>& bodies) {
   w.f64(g.get(), "volume", volume, {n}, "m^3", "volume of body k");
   w.i32(g.get(), "removability", removability, "",
         std::string("block-theory class of body k: ") + kRemovabilityCodes);
-  w.f64(g.get(), "sliding_direction", io3::flatten(sliding), {n, 3}, "1",
+  w.f64(g.get(), "sliding_direction", io::flatten(sliding), {n, 3}, "1",
         "unit direction x, y, z in which body k leaves under gravity (falls or slides), else 0");
 }
 
 // The blocks without `body` checked against the bodies (read later).
 std::vector<Polyhedron> read_blocks(const h5::Reader& r, long long nsets, long long nlayers) {
   std::size_t nv = 0, nf = 0;
-  const std::vector<double> xyz = io3::read_table(r, "/blocks/vertices", 3, nv);
+  const std::vector<double> xyz = io::read_table(r, "/blocks/vertices", 3, nv);
   const std::vector<std::int64_t> voff =
-      io3::read_offsets(r, "/blocks/vertex_offsets", nv, 4, "block");
+      io::read_offsets(r, "/blocks/vertex_offsets", nv, 4, "block");
   const std::size_t nb = voff.size() - 1;
-  const std::vector<double> normal = io3::read_table(r, "/faces/normal", 3, nf);
+  const std::vector<double> normal = io::read_table(r, "/faces/normal", 3, nf);
   const std::vector<std::int64_t> foff =
-      io3::read_offsets(r, "/blocks/face_offsets", nf, 4, "block");
+      io::read_offsets(r, "/blocks/face_offsets", nf, 4, "block");
   if (foff.size() != nb + 1)
     r.fail("dataset /blocks/face_offsets has " + std::to_string(foff.size()) +
            " entries, expected " + std::to_string(nb + 1) + ", as many as /blocks/vertex_offsets");
-  const std::vector<int> fv = io3::read_int_list(r, "/faces/vertices", 0, kIntMax);
+  const std::vector<int> fv = io::read_int_list(r, "/faces/vertices", 0, kIntMax);
   const std::vector<std::int64_t> fvoff =
-      io3::read_offsets(r, "/faces/offsets", fv.size(), 3, "face");
+      io::read_offsets(r, "/faces/offsets", fv.size(), 3, "face");
   if (fvoff.size() != nf + 1)
     r.fail("dataset /faces/offsets has " + std::to_string(fvoff.size()) + " entries, expected " +
            std::to_string(nf + 1) + ", one more than the rows of /faces/normal");
   const std::vector<int> fset =
-      io3::read_ints(r, "/faces/set", nf, "face", kArtificialSet, nsets - 1);
-  const std::vector<double> volume = io3::read_vector(r, "/blocks/volume", nb, "block");
-  const std::vector<double> centroid = io3::read_rows(r, "/blocks/centroid", nb, 3, "block");
-  const std::vector<double> moment = io3::read_fixed(r, "/blocks/second_moment", {nb, 3, 3});
-  const std::vector<int> body = io3::read_ints(r, "/blocks/body", nb, "block", -1, kIntMax);
-  const std::vector<int> layer = io3::read_ints(r, "/blocks/layer", nb, "block", -1, nlayers - 1);
+      io::read_ints(r, "/faces/set", nf, "face", kArtificialSet, nsets - 1);
+  const std::vector<double> volume = io::read_vector(r, "/blocks/volume", nb, "block");
+  const std::vector<double> centroid = io::read_rows(r, "/blocks/centroid", nb, 3, "block");
+  const std::vector<double> moment = io::read_fixed(r, "/blocks/second_moment", {nb, 3, 3});
+  const std::vector<int> body = io::read_ints(r, "/blocks/body", nb, "block", -1, kIntMax);
+  const std::vector<int> layer = io::read_ints(r, "/blocks/layer", nb, "block", -1, nlayers - 1);
 
   std::vector<Polyhedron> out(nb);
   for (std::size_t i = 0; i < nb; ++i) {
     Polyhedron& b = out[i];
     for (std::size_t k = as_index(voff[i]); k < as_index(voff[i + 1]); ++k)
-      b.vertices.push_back(io3::row3(xyz, k));
+      b.vertices.push_back(io::row3(xyz, k));
     for (std::size_t j = as_index(foff[i]); j < as_index(foff[i + 1]); ++j) {
       PolyFace f;
       for (std::size_t k = as_index(fvoff[j]); k < as_index(fvoff[j + 1]); ++k) {
@@ -137,12 +137,12 @@ std::vector<Polyhedron> read_blocks(const h5::Reader& r, long long nsets, long l
                  std::to_string(b.vertices.size()) + " vertices");
         f.vertices.push_back(fv[k]);
       }
-      f.normal = io3::row3(normal, j);
+      f.normal = io::row3(normal, j);
       f.set = fset[j];
       b.faces.push_back(std::move(f));
     }
     b.volume = volume[i];
-    b.centroid = io3::row3(centroid, i);
+    b.centroid = io::row3(centroid, i);
     using RowMajor3 = Eigen::Matrix<double, 3, 3, Eigen::RowMajor>;
     b.second_moment = Eigen::Map<const RowMajor3>(&moment[9 * i]);  // as written, row by row
     b.body = body[i];
@@ -155,20 +155,20 @@ std::vector<Body3> read_bodies(const h5::Reader& r, std::size_t nblocks) {
   std::vector<Body3> out;
   if (!r.exists("/bodies")) return out;
   const std::vector<int> parts =
-      io3::read_int_list(r, "/bodies/parts", 0, static_cast<long long>(nblocks) - 1);
+      io::read_int_list(r, "/bodies/parts", 0, static_cast<long long>(nblocks) - 1);
   const std::vector<std::int64_t> off =
-      io3::read_offsets(r, "/bodies/offsets", parts.size(), 1, "body");
+      io::read_offsets(r, "/bodies/offsets", parts.size(), 1, "body");
   const std::size_t n = off.size() - 1;
-  const std::vector<double> volume = io3::read_vector(r, "/bodies/volume", n, "body");
-  const std::vector<int> removability = io3::read_ints(
+  const std::vector<double> volume = io::read_vector(r, "/bodies/volume", n, "body");
+  const std::vector<int> removability = io::read_ints(
       r, "/bodies/removability", n, "body", 0, static_cast<long long>(Removability::SlidesTwo));
-  const std::vector<double> sliding = io3::read_rows(r, "/bodies/sliding_direction", n, 3, "body");
+  const std::vector<double> sliding = io::read_rows(r, "/bodies/sliding_direction", n, 3, "body");
   out.resize(n);
   for (std::size_t k = 0; k < n; ++k) {
     out[k].parts.assign(parts.begin() + off[k], parts.begin() + off[k + 1]);
     out[k].volume = volume[k];
     out[k].removability = static_cast<Removability>(removability[k]);
-    out[k].sliding_direction = io3::row3(sliding, k);
+    out[k].sliding_direction = io::row3(sliding, k);
   }
   return out;
 }
@@ -179,16 +179,16 @@ void write_polyhedra_h5(const std::string& path, const PolyhedronModel& model) {
   AtomicOutput out(path);
   {
     h5::Writer w(path, out.temp_path());
-    io3::write_root_attributes(w, kBlocks3dFormat, model.provenance);
+    io::write_root_attributes(w, kBlocks3dFormat, io::kUnits3d, model.provenance);
     w.attr_f64(w.file(), "domain_volume", model.domain_volume);
     w.attr_f64(w.file(), "excavated_volume", model.excavated_volume);
     w.attr_i32(w.file(), "unfinished_cuts", model.unfinished_cuts);
-    io3::write_domain(w, model.domain);
+    io::write_domain(w, model.domain);
     write_blocks(w, model.blocks);
     write_bodies(w, model.bodies);
-    io3::write_sets(w, model.sets);
-    io3::write_points(w, model.points);
-    io3::write_layers(w, model.layers, model.bed_normal);
+    io::write_sets(w, model.sets);
+    io::write_points(w, model.points);
+    io::write_layers(w, model.layers, model.bed_normal);
     w.close();
   }
   out.commit();
@@ -196,19 +196,19 @@ void write_polyhedra_h5(const std::string& path, const PolyhedronModel& model) {
 
 PolyhedronModel read_polyhedra_h5(const std::string& path) {
   h5::Reader r(path);
-  io3::check_format(r, kBlocks3dFormat);
+  io::check_format(r, kBlocks3dFormat);
   PolyhedronModel m;
-  m.provenance = io3::read_provenance(r);
-  m.domain_volume = io3::root_number(r, "domain_volume");
-  m.excavated_volume = io3::root_number(r, "excavated_volume");
+  m.provenance = io::read_provenance(r);
+  m.domain_volume = io::root_number(r, "domain_volume");
+  m.excavated_volume = io::root_number(r, "excavated_volume");
   const auto unfinished = r.attr_int(r.file(), "unfinished_cuts", "the file").value_or(0);
   if (unfinished < 0 || unfinished > kIntMax)
     r.fail("attribute unfinished_cuts is " + std::to_string(unfinished) + ", must be 0 or more");
   m.unfinished_cuts = static_cast<int>(unfinished);
-  m.domain = io3::read_domain(r);
-  m.sets = io3::read_sets(r);
-  m.points = io3::read_points(r);
-  m.layers = io3::read_layers(r, m.bed_normal);
+  m.domain = io::read_domain(r);
+  m.sets = io::read_sets(r);
+  m.points = io::read_points(r);
+  m.layers = io::read_layers(r, m.bed_normal);
   m.blocks = read_blocks(r, static_cast<long long>(m.sets.size()),
                          static_cast<long long>(m.layers.size()));
   m.bodies = read_bodies(r, m.blocks.size());

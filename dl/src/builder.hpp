@@ -3,10 +3,12 @@
 #include <nlohmann/json.hpp>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "dda/common/line_model.hpp"
 #include "dda/common/yaml_reader.hpp"
 #include "dda/dl/clip.hpp"
+#include "dda/dl/layering.hpp"
 
 namespace dda::dl::detail {
 
@@ -40,6 +42,12 @@ void read_user_lines(const YamlNode& root, Builder& b);
 void read_traces(const YamlNode& root, Builder& b);
 void read_geometry(const YamlNode& root, Builder& b);
 void read_points(const YamlNode& root, Builder& b);
+// A point's `kind` (fixed, load, measurement, hole; default measurement),
+// and the report's count of points per kind (2D and 3D alike).
+PointKind read_point_kind(const YamlNode& n);
+nlohmann::json point_counts(const std::vector<PointKind>& kinds);
+// The `thickness` mapping of a layering section (2D and 3D alike).
+ThicknessSpec read_thickness(const YamlNode& n);
 // Per-set totals and overall totals, from the finished model.
 void add_totals_to_report(Builder& b);
 

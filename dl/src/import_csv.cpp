@@ -6,43 +6,14 @@
 
 #include "dda/common/error.hpp"
 #include "dda/dl/import.hpp"
+#include "text_fields.hpp"
 
 namespace dda::dl {
 
+using detail::split_fields;
+using detail::trim;
+
 namespace {
-
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\r\n");
-  if (b == std::string::npos) return "";
-  const auto e = s.find_last_not_of(" \t\r\n");
-  return s.substr(b, e - b + 1);
-}
-
-// Fields separated by commas or semicolons; if there are none, by blanks.
-std::vector<std::string> split_fields(const std::string& line) {
-  std::vector<std::string> out;
-  if (line.find_first_of(",;") != std::string::npos) {
-    std::string cur;
-    for (const char c : line) {
-      if (c == ',' || c == ';') {
-        out.push_back(trim(cur));
-        cur.clear();
-      } else {
-        cur += c;
-      }
-    }
-    out.push_back(trim(cur));
-  } else {
-    std::size_t i = 0;
-    while (i < line.size()) {
-      while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
-      const std::size_t b = i;
-      while (i < line.size() && line[i] != ' ' && line[i] != '\t') ++i;
-      if (i > b) out.push_back(line.substr(b, i - b));
-    }
-  }
-  return out;
-}
 
 // The whole field as a double (strtod is locale-independent for "C").
 bool parse_number(const std::string& field, double& v) {

@@ -12,39 +12,7 @@ namespace dda::dl::detail {
 
 namespace {
 
-// As in 2D: below this acceptance the truncated log-normal is not the
-// distribution asked for.
-constexpr double kMinAcceptance = 0.01;
 constexpr double kMinAngleToBedsDeg = 5;  // generate_layering3d's rule, checked here to name the key
-
-// The 2D `thickness` mapping (scenario_layering.cpp), with the same keys and rules.
-ThicknessSpec read_thickness3(const YamlNode& n) {
-  ThicknessSpec t;
-  const std::string dist = n.choice("distribution", {"lognormal", "constant"}, "lognormal");
-  if (dist == "constant") {
-    n.allow({"distribution", "value"});
-    t.kind = ThicknessSpec::Kind::Constant;
-    t.value = n.number("value", Range::positive());
-    return t;
-  }
-  n.allow({"distribution", "mean", "std", "mu", "sigma", "minimum"});
-  t.kind = ThicknessSpec::Kind::LogNormal;
-  if (n.one_of({"mean", "mu"}) == "mean") {
-    if (n.has("sigma")) n.fail_key("sigma", "goes with mu, not with mean (give mean and std, or mu and sigma)");
-    lognormal_from_moments(n.number("mean", Range::positive()), n.number("std", Range::non_negative()), t.mu, t.sigma);
-  } else {
-    if (n.has("std")) n.fail_key("std", "goes with mean, not with mu (give mean and std, or mu and sigma)");
-    t.mu = n.number("mu", Range::any());
-    t.sigma = n.number("sigma", Range::non_negative());
-  }
-  t.minimum = n.number("minimum", 0.0, Range::non_negative());
-  const double p = thickness_acceptance(t);
-  if (p < kMinAcceptance)
-    n.fail_key("minimum", "leaves only " + format_number(100 * p, 3) +
-                              "% of the log-normal thicknesses (at least 1% must reach the minimum); lower the "
-                              "minimum or raise the mean");
-  return t;
-}
 
 LayerSetSpec3 read_layer_set3(const YamlNode& n, std::size_t index, const Vec3& bed_normal) {
   n.allow({"name", "dip", "dip_direction", "fsi", "randomness"});
@@ -95,7 +63,7 @@ void read_layering3(const YamlNode& root, Builder3& b) {
   LayeringSpec3 spec;
   spec.dip_deg = read_dip(n, "dip", 0.0);
   spec.dip_direction_deg = read_dip_direction(n, "dip_direction", 0.0);
-  spec.thickness = read_thickness3(n.child("thickness"));
+  spec.thickness = read_thickness(n.child("thickness"));
   spec.bedding_set = n.text("bedding_set", "bedding");
   if (spec.bedding_set.empty()) n.fail_key("bedding_set", "must not be empty");
   const Vec3 nb = normal_from_dip(spec.dip_deg, spec.dip_direction_deg);

@@ -10,11 +10,7 @@ void read_points3(const YamlNode& root, Builder3& b) {
     ModelPoint3 p;
     p.name = n.text("name");
     if (p.name.empty()) n.fail_key("name", "must not be empty");
-    const std::string kind = n.choice("kind", {"fixed", "load", "measurement", "hole"}, "measurement");
-    p.kind = kind == "fixed"  ? PointKind::Fixed
-             : kind == "load" ? PointKind::Load
-             : kind == "hole" ? PointKind::Hole
-                              : PointKind::Measurement;
+    p.kind = read_point_kind(n);
     p.p = point3(n, "at");
     for (const ModelPoint3& q : b.model.points)
       if (q.name == p.name) n.fail_key("name", "'" + p.name + "' is already the name of another point");
@@ -22,9 +18,9 @@ void read_points3(const YamlNode& root, Builder3& b) {
       n.fail_key("at", "puts point '" + p.name + "' at " + point_text(p.p) + ", outside the domain");
     b.model.points.push_back(p);
   }
-  nlohmann::json counts = {{"fixed", 0}, {"load", 0}, {"measurement", 0}, {"hole", 0}};
-  for (const ModelPoint3& p : b.model.points) counts[to_string(p.kind)] = counts[to_string(p.kind)].get<int>() + 1;
-  b.report["points"] = counts;
+  std::vector<PointKind> kinds;
+  for (const ModelPoint3& p : b.model.points) kinds.push_back(p.kind);
+  b.report["points"] = point_counts(kinds);
 }
 
 }  // namespace dda::dl::detail

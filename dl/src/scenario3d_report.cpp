@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "builder.hpp"  // detail::format_number
+#include "report_table.hpp"
 #include "dda/dl/scenario3d.hpp"
 
 namespace dda::dl {
@@ -12,49 +13,8 @@ namespace {
 
 using nlohmann::json;
 
-// Columns padded to their widest cell: the first left-aligned, the rest right.
-class Table {
- public:
-  explicit Table(std::vector<std::string> header) { rows_.push_back(std::move(header)); }
-  void add(std::vector<std::string> row) { rows_.push_back(std::move(row)); }
-  std::string str() const {
-    std::vector<std::size_t> width;
-    for (const auto& r : rows_)
-      for (std::size_t c = 0; c < r.size(); ++c) {
-        width.resize(std::max(width.size(), c + 1), 0);
-        width[c] = std::max(width[c], r[c].size());
-      }
-    std::ostringstream out;
-    for (std::size_t i = 0; i < rows_.size(); ++i) {
-      std::string line = " ";
-      for (std::size_t c = 0; c < rows_[i].size(); ++c) {
-        const std::string& cell = rows_[i][c];
-        const std::string pad(width[c] - cell.size(), ' ');
-        line += ' ';
-        line += c == 0 ? cell + pad : pad + cell;
-      }
-      while (!line.empty() && line.back() == ' ') line.pop_back();
-      out << line << "\n";
-      if (i == 0) {
-        std::size_t total = 0;
-        for (std::size_t w : width) total += w + 1;
-        out << "  " << std::string(total - 1, '-') << "\n";
-      }
-    }
-    return out.str();
-  }
-
- private:
-  std::vector<std::vector<std::string>> rows_;
-};
-
-std::string num(const json& v, int precision = 4) {
-  if (v.is_null()) return "-";
-  if (v.is_number_integer() || v.is_number_unsigned()) return std::to_string(v.get<long long>());
-  if (v.is_number()) return detail::format_number(v.get<double>(), precision);
-  if (v.is_string()) return v.get<std::string>();
-  return v.dump();
-}
+using detail::num;
+using detail::Table;
 
 std::string three(const json& v, const char* a, const char* b, const char* c) {
   return num(v[a], 3) + " / " + num(v[b], 3) + " / " + num(v[c], 3);

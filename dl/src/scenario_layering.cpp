@@ -9,6 +9,24 @@ namespace dda::dl::detail {
 
 namespace {
 
+LayerSetSpec read_layer_set(const YamlNode& n, std::size_t index, double bedding_dip) {
+  n.allow({"name", "dip", "fsi", "randomness"});
+  LayerSetSpec s;
+  std::string fallback_name = "L";  // (not "L" + ...: GCC 12 -Wrestrict false positive)
+  fallback_name += std::to_string(index + 1);
+  s.name = n.text("name", fallback_name);
+  if (s.name.empty()) n.fail_key("name", "must not be empty");
+  s.dip_deg = n.number("dip", 90.0, Range::half_open(0, 180));
+  s.fsi = n.number("fsi", Range::positive());
+  s.randomness = n.number("randomness", 0.0, Range::half_open(0, 1));
+  const double rel = std::abs(std::sin(deg2rad(s.dip_deg - bedding_dip)));
+  if (rel < std::sin(deg2rad(5.0)))
+    n.fail_key("dip", "must differ from the bedding dip by at least 5 degrees (the joints would run along the beds)");
+  return s;
+}
+
+}  // namespace
+
 // Smallest acceptance probability of the truncated log-normal we accept: below
 // it the minimum sits so far in the upper tail that the thickness
 // distribution asked for is not what would be drawn.
@@ -44,24 +62,6 @@ ThicknessSpec read_thickness(const YamlNode& n) {
                               "minimum or raise the mean");
   return t;
 }
-
-LayerSetSpec read_layer_set(const YamlNode& n, std::size_t index, double bedding_dip) {
-  n.allow({"name", "dip", "fsi", "randomness"});
-  LayerSetSpec s;
-  std::string fallback_name = "L";  // (not "L" + ...: GCC 12 -Wrestrict false positive)
-  fallback_name += std::to_string(index + 1);
-  s.name = n.text("name", fallback_name);
-  if (s.name.empty()) n.fail_key("name", "must not be empty");
-  s.dip_deg = n.number("dip", 90.0, Range::half_open(0, 180));
-  s.fsi = n.number("fsi", Range::positive());
-  s.randomness = n.number("randomness", 0.0, Range::half_open(0, 1));
-  const double rel = std::abs(std::sin(deg2rad(s.dip_deg - bedding_dip)));
-  if (rel < std::sin(deg2rad(5.0)))
-    n.fail_key("dip", "must differ from the bedding dip by at least 5 degrees (the joints would run along the beds)");
-  return s;
-}
-
-}  // namespace
 
 void read_layering(const YamlNode& root, Builder& b) {
   const auto node = root.optional_child("layering");

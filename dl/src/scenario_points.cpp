@@ -9,11 +9,7 @@ void read_points(const YamlNode& root, Builder& b) {
     ModelPoint p;
     p.name = n.text("name");
     if (p.name.empty()) n.fail_key("name", "must not be empty");
-    const std::string kind = n.choice("kind", {"fixed", "load", "measurement", "hole"}, "measurement");
-    p.kind = kind == "fixed" ? PointKind::Fixed
-             : kind == "load" ? PointKind::Load
-             : kind == "hole" ? PointKind::Hole
-                              : PointKind::Measurement;
+    p.kind = read_point_kind(n);
     p.p = n.point("at");
     for (const ModelPoint& q : b.model.points)
       if (q.name == p.name) n.fail_key("name", "'" + p.name + "' is already the name of another point");
@@ -22,15 +18,23 @@ void read_points(const YamlNode& root, Builder& b) {
                            "), outside the domain");
     b.model.points.push_back(p);
   }
+  std::vector<PointKind> kinds;
+  for (const ModelPoint& p : b.model.points) kinds.push_back(p.kind);
+  b.report["points"] = point_counts(kinds);
+}
+
+PointKind read_point_kind(const YamlNode& n) {
+  const std::string kind = n.choice("kind", {"fixed", "load", "measurement", "hole"}, "measurement");
+  return kind == "fixed" ? PointKind::Fixed
+         : kind == "load" ? PointKind::Load
+         : kind == "hole" ? PointKind::Hole
+                          : PointKind::Measurement;
+}
+
+nlohmann::json point_counts(const std::vector<PointKind>& kinds) {
   nlohmann::json counts = {{"fixed", 0}, {"load", 0}, {"measurement", 0}, {"hole", 0}};
-  for (const ModelPoint& p : b.model.points) {
-    const char* k = p.kind == PointKind::Fixed ? "fixed"
-                    : p.kind == PointKind::Load ? "load"
-                    : p.kind == PointKind::Hole ? "hole"
-                                                : "measurement";
-    counts[k] = counts[k].get<int>() + 1;
-  }
-  b.report["points"] = counts;
+  for (PointKind k : kinds) counts[to_string(k)] = counts[to_string(k)].get<int>() + 1;
+  return counts;
 }
 
 }  // namespace dda::dl::detail

@@ -1,5 +1,6 @@
 #pragma once
-// Private to DL: splitting the lines of the 3D importers' text files.
+// Private to DL: splitting the lines of the importers' text files (CSV
+// traces, CSV polygons, FracMan .fab).
 #include <cctype>
 #include <cerrno>
 #include <cmath>

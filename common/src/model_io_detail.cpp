@@ -1,12 +1,12 @@
-// Shared pieces of the 3D HDF5 files; see model_io3_detail.hpp.
-#include "model_io3_detail.hpp"
+// Shared pieces of the 3D HDF5 files; see model_io_detail.hpp.
+#include "model_io_detail.hpp"
 
 #include <cmath>
 #include <ctime>
 
 #include "dda/common/error.hpp"
 
-namespace dda::io3 {
+namespace dda::io {
 namespace {
 
 std::string utc_now() {
@@ -17,6 +17,12 @@ std::string utc_now() {
   std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
   return buf;
 }
+
+std::string per(std::size_t n, const std::string& what) {
+  return std::to_string(n) + ",), one value per " + what;
+}
+
+}  // namespace
 
 std::string shape_text(const std::vector<hsize_t>& dims) {
   std::string s = "(";
@@ -29,19 +35,13 @@ void check_finite(const h5::Reader& r, const std::string& ds, const std::vector<
     if (!std::isfinite(x)) r.fail("dataset " + ds + " holds a value that is not a finite number");
 }
 
-std::string per(std::size_t n, const std::string& what) {
-  return std::to_string(n) + ",), one value per " + what;
-}
-
-}  // namespace
-
 // ------------------------------------------------------------------ writing
 
-void write_root_attributes(h5::Writer& w, const char* format, const Provenance& p) {
+void write_root_attributes(h5::Writer& w, const char* format, const char* units, const Provenance& p) {
   const hid_t root = w.file();
   w.attr_text(root, "format", format);
   w.attr_i32(root, "format_version", kFormatVersion);
-  w.attr_text(root, "units", kUnits);
+  w.attr_text(root, "units", units);
   w.attr_text(root, "program_version",
               p.program_version.empty() ? std::string(version_string()) : p.program_version);
   w.attr_text(root, "scenario_path", p.scenario_path);
@@ -300,4 +300,4 @@ std::vector<Layer> read_layers(const h5::Reader& r, Vec3& bed_normal) {
   return layers;
 }
 
-}  // namespace dda::io3
+}  // namespace dda::io

@@ -1,11 +1,9 @@
 #pragma once
-// Private to dda_common: the pieces the 3D HDF5 files (fractures, blocks3d)
-// share. Readers turn every problem into one InputError naming the file
-// (through h5::Reader::fail); the layout itself is documented in
+// Private to dda_common: the pieces the HDF5 files of the pipeline share
+// (2D lines and blocks in model_io.cpp; 3D fractures and blocks3d in
+// model_io3_*.cpp). Readers turn every problem into one InputError naming
+// the file (through h5::Reader::fail); the layout itself is documented in
 // docs/formats.md.
-//
-// The 2D files (model_io.cpp) keep their own copies of the generic helpers
-// for now; they could move onto these.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -13,17 +11,19 @@
 #include "dda/common/fracture_model.hpp"
 #include "dda/common/h5_util.hpp"
 
-namespace dda::io3 {
+namespace dda::io {
 
 constexpr int kFormatVersion = 1;
-constexpr const char* kUnits =
+constexpr const char* kUnits3d =
     "SI: lengths m, areas m^2, volumes m^3, second moments m^5, angles deg";
 constexpr const char* kSetCodes =
     "joint set index (0, 1, ...; see /sets), -1 domain boundary, -2 excavation, -3 artificial";
 
 // ------------------------------------------------------------------ writing
 
-void write_root_attributes(h5::Writer& w, const char* format, const Provenance& p);
+// format, format_version, units and the provenance (program version and
+// creation time filled in when empty).
+void write_root_attributes(h5::Writer& w, const char* format, const char* units, const Provenance& p);
 // Rows of x y z, for an (n, 3) dataset.
 std::vector<double> flatten(const std::vector<Vec3>& v);
 void write_domain(h5::Writer& w, const Box3& box);
@@ -32,6 +32,11 @@ void write_points(h5::Writer& w, const std::vector<ModelPoint3>& points);
 void write_layers(h5::Writer& w, const std::vector<Layer>& layers, const Vec3& bed_normal);
 
 // ------------------------------------------------------------------ reading
+
+// "(2, 3)" or "(5,)": a dataset's shape as messages write it.
+std::string shape_text(const std::vector<hsize_t>& dims);
+// InputError naming `ds` if a value is not finite.
+void check_finite(const h5::Reader& r, const std::string& ds, const std::vector<double>& v);
 
 // `format` is `expected` and `format_version` one this code reads.
 void check_format(const h5::Reader& r, const std::string& expected);
@@ -76,4 +81,4 @@ inline Vec3 row3(const std::vector<double>& v, std::size_t i) {
   return {v[3 * i], v[3 * i + 1], v[3 * i + 2]};
 }
 
-}  // namespace dda::io3
+}  // namespace dda::io
