@@ -6,8 +6,7 @@
 
 #include "dda/common/error.hpp"
 
-namespace dda::io {
-namespace {
+namespace dda {
 
 std::string utc_now() {
   const std::time_t t = std::time(nullptr);
@@ -17,6 +16,11 @@ std::string utc_now() {
   std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
   return buf;
 }
+
+}  // namespace dda
+
+namespace dda::io {
+namespace {
 
 std::string per(std::size_t n, const std::string& what) {
   return std::to_string(n) + ",), one value per " + what;

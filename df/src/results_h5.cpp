@@ -17,15 +17,6 @@ constexpr int kFormatVersion = 1;
 constexpr const char* kUnits =
     "SI: lengths m, time s, velocity m/s, rotation rad, stress Pa, force N and energy J per unit thickness";
 
-std::string utc_now() {
-  const std::time_t t = std::time(nullptr);
-  std::tm tm{};
-  gmtime_r(&t, &tm);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
-  return buf;
-}
-
 std::vector<double> flat(const std::vector<Vec2>& v) {
   std::vector<double> out;
   out.reserve(2 * v.size());

@@ -17,4 +17,8 @@ struct Provenance {
 // Program version, e.g. "0.1.0"; defined in the generated version.cpp.
 const char* version_string();
 
+// The current time as ISO 8601 UTC, e.g. "2026-11-22T21:50:00Z" (the
+// `created_utc` of every file the project writes).
+std::string utc_now();
+
 }  // namespace dda
