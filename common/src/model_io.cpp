@@ -72,23 +72,7 @@ void write_points(h5::Writer& w, const std::vector<ModelPoint>& points,
 }
 
 void write_layers(h5::Writer& w, const std::vector<Layer>& layers) {
-  h5::Id g = w.group("layers");
-  std::vector<double> bottom, top, target, realised;
-  for (const Layer& l : layers) {
-    bottom.push_back(l.bottom);
-    top.push_back(l.top);
-    target.push_back(l.target_fsi);
-    realised.push_back(l.realised_fsi);
-  }
-  const hsize_t n = layers.size();
-  const std::string coord =
-      " of bed i (elevation y for horizontal beds, else coordinate along the bed normal)";
-  w.f64(g.get(), "bottom", bottom, {n}, "m", "lower boundary" + coord);
-  w.f64(g.get(), "top", top, {n}, "m", "upper boundary" + coord);
-  w.f64(g.get(), "target_fsi", target, {n}, "1",
-        "fracture spacing index asked for (bed thickness / median joint spacing), 0 if none");
-  w.f64(g.get(), "realised_fsi", realised, {n}, "1",
-        "fracture spacing index of the joints generated in bed i");
+  io::write_layer_table(w, layers, " (elevation y for horizontal beds, else coordinate along the bed normal)", "joints");
 }
 
 // ------------------------------------------------------------------ reading

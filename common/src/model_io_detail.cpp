@@ -94,7 +94,8 @@ void write_points(h5::Writer& w, const std::vector<ModelPoint3>& points) {
   w.f64(g.get(), "xyz", flatten(xyz), {points.size(), 3}, "m", "coordinates x, y, z of point i");
 }
 
-void write_layers(h5::Writer& w, const std::vector<Layer>& layers, const Vec3& bed_normal) {
+h5::Id write_layer_table(h5::Writer& w, const std::vector<Layer>& layers, const std::string& coordinate,
+                         const std::string& generated) {
   h5::Id g = w.group("layers");
   std::vector<double> bottom, top, target, realised;
   for (const Layer& l : layers) {
@@ -104,13 +105,17 @@ void write_layers(h5::Writer& w, const std::vector<Layer>& layers, const Vec3& b
     realised.push_back(l.realised_fsi);
   }
   const hsize_t n = layers.size();
-  const std::string coord = " of bed i, as the coordinate along the bed normal (normal . x)";
+  const std::string coord = " of bed i" + coordinate;
   w.f64(g.get(), "bottom", bottom, {n}, "m", "lower boundary" + coord);
   w.f64(g.get(), "top", top, {n}, "m", "upper boundary" + coord);
   w.f64(g.get(), "target_fsi", target, {n}, "1",
         "fracture spacing index asked for (bed thickness / median joint spacing), 0 if none");
-  w.f64(g.get(), "realised_fsi", realised, {n}, "1",
-        "fracture spacing index of the fractures generated in bed i");
+  w.f64(g.get(), "realised_fsi", realised, {n}, "1", "fracture spacing index of the " + generated + " generated in bed i");
+  return g;
+}
+
+void write_layers(h5::Writer& w, const std::vector<Layer>& layers, const Vec3& bed_normal) {
+  h5::Id g = write_layer_table(w, layers, ", as the coordinate along the bed normal (normal . x)", "fractures");
   w.f64(g.get(), "normal", flatten({bed_normal}), {3}, "1",
         "normal of the beds x, y, z (written even when there are no beds)");
 }

@@ -29,6 +29,11 @@ std::vector<double> flatten(const std::vector<Vec3>& v);
 void write_domain(h5::Writer& w, const Box3& box);
 void write_sets(h5::Writer& w, const std::vector<JointSetInfo>& sets);
 void write_points(h5::Writer& w, const std::vector<ModelPoint3>& points);
+// The /layers group with bottom, top, target_fsi and realised_fsi, whose
+// descriptions name the bed coordinate and what was generated; returned so a
+// file can add its own datasets.
+h5::Id write_layer_table(h5::Writer& w, const std::vector<Layer>& layers, const std::string& coordinate,
+                         const std::string& generated);
 void write_layers(h5::Writer& w, const std::vector<Layer>& layers, const Vec3& bed_normal);
 
 // ------------------------------------------------------------------ reading
