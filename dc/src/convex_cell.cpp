@@ -66,6 +66,16 @@ Cell make_box(const PlaneTable& table, const int plane[6], int tag) {
   return c;
 }
 
+PolyhedronMoments moments(const Cell& c) {
+  std::vector<Vec3> xs;
+  xs.reserve(c.vertices.size());
+  for (const auto& v : c.vertices) xs.push_back(v.x);
+  std::vector<std::vector<int>> loops;
+  loops.reserve(c.faces.size());
+  for (const auto& f : c.faces) loops.push_back(f.loop);
+  return polyhedron_moments(xs, loops);
+}
+
 int bounds_side(const Cell& c, const exact::Plane& h) {
   const Vec3 centre = 0.5 * (c.bounds.lo + c.bounds.hi);
   const Vec3 half = 0.5 * (c.bounds.hi - c.bounds.lo);

@@ -66,6 +66,9 @@ Cell make_box(const PlaneTable& table, const int plane[6], int tag);
 // sides are used instead, so the result is always a valid polyhedron.
 int classify(const Cell& c, const PlaneTable& table, int h, std::vector<std::int8_t>& sides, double snap = 0);
 
+// Volume, centroid and second moment of the cell (from its double coordinates).
+PolyhedronMoments moments(const Cell& c);
+
 // Quick conservative bound test in doubles: -1 / +1 if the cell's bounding
 // box is clearly on one side of plane h (well beyond rounding), else 0 (use
 // classify to know).

@@ -11,15 +11,6 @@
 
 namespace dda::dc::detail3 {
 
-double cell_volume(const cell::Cell& c) {
-  std::vector<Vec3> xs;
-  xs.reserve(c.vertices.size());
-  for (const auto& v : c.vertices) xs.push_back(v.x);
-  std::vector<std::vector<int>> loops;
-  for (const auto& f : c.faces) loops.push_back(f.loop);
-  return polyhedron_moments(xs, loops).volume;
-}
-
 void excavate(Work& w, const std::vector<Excavation3>& excavations) {
   std::vector<std::int8_t> sides;
   for (const Excavation3& e : excavations) {
@@ -64,7 +55,7 @@ void excavate(Work& w, const std::vector<Excavation3>& excavations) {
         out.push_back(std::move(c));
         continue;
       }
-      w.excavated_volume += cell_volume(cur);
+      w.excavated_volume += cell::moments(cur).volume;
       ++w.excavated_pieces;
       for (auto& p : pieces) {
         p.exposed = true;

@@ -46,8 +46,6 @@ struct Work {
   std::vector<bool> domain_surface_planes;
 };
 
-double cell_volume(const cell::Cell& c);
-
 // Where cell c lies relative to plane h (cell::classify with the job's snap).
 int classify(const Work& w, const cell::Cell& c, int h, std::vector<std::int8_t>& sides);
 // cell::split, falling back to the exact sides if the snapped ones do not

@@ -29,16 +29,14 @@ bool contains(const cell::Cell& c, const cell::PlaneTable& t, const Vec3& p) {
 Polyhedron to_polyhedron(const cell::Cell& c, const cell::PlaneTable& t) {
   Polyhedron p;
   for (const auto& v : c.vertices) p.vertices.push_back(v.x);
-  std::vector<std::vector<int>> loops;
   for (const auto& f : c.faces) {
     PolyFace out;
     out.vertices = f.loop;
     out.normal = (f.sense * t[f.plane].n).normalized();
     out.set = f.tag;
     p.faces.push_back(std::move(out));
-    loops.push_back(f.loop);
   }
-  const PolyhedronMoments m = polyhedron_moments(p.vertices, loops);
+  const PolyhedronMoments m = cell::moments(c);
   p.volume = m.volume;
   p.centroid = m.centroid;
   p.second_moment = m.second_moment;

@@ -211,7 +211,7 @@ SurfaceCut cut_by_surface(Work& w, const TriangleMesh& surface, bool keep_inside
     if (!boxes_meet(c.bounds, box)) {  // wholly outside the surface
       if (!keep_inside) kept.push_back(std::move(c));
       else {
-        out.removed_volume += cell_volume(c);
+        out.removed_volume += cell::moments(c).volume;
         ++out.removed_pieces;
       }
       continue;
@@ -226,7 +226,7 @@ SurfaceCut cut_by_surface(Work& w, const TriangleMesh& surface, bool keep_inside
     for (std::size_t i = 0; i < pieces.size(); ++i) {
       cell::Cell& p = pieces[i];
       if (inside[i] != keep_inside) {
-        out.removed_volume += cell_volume(p);
+        out.removed_volume += cell::moments(p).volume;
         ++out.removed_pieces;
         continue;
       }
