@@ -2,10 +2,11 @@
 // iteration, and the end-of-step update (simulation3d.hpp).
 #include "dda/df/simulation3d.hpp"
 
+#include "simulation3d_assembly.hpp"
+
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 #include <cmath>
-#include <numbers>
 #include <stdexcept>
 
 namespace dda::df3 {
@@ -28,34 +29,6 @@ void refresh(Polyhedron& p) {
   for (auto& f : p.faces) f.normal = face_normal(p.vertices, f.vertices);
 }
 
-// Global K and F with the unknowns of free blocks only (dof < 0: fixed).
-struct Assembly {
-  const std::vector<int>& dof;
-  std::vector<Eigen::Triplet<double>> k;
-  Eigen::VectorXd f;
-
-  void add_k(int bi, int bj, const Matrix12d& m) {
-    if (dof[bi] < 0 || dof[bj] < 0) return;
-    for (int r = 0; r < kDofs; ++r)
-      for (int c = 0; c < kDofs; ++c)
-        if (m(r, c) != 0) k.emplace_back(dof[bi] + r, dof[bj] + c, m(r, c));
-  }
-  void add_f(int b, const Vector12d& v) {
-    if (dof[b] >= 0) f.segment<kDofs>(dof[b]) += v;
-  }
-  // Penalty energy p/2 |s0 + A di + B dj|^2 (A, B with one row per spring).
-  template <int R>
-  void add_spring(int i, int j, double p, const Eigen::Matrix<double, R, 1>& s0,
-                  const Eigen::Matrix<double, R, kDofs>& a, const Eigen::Matrix<double, R, kDofs>& b) {
-    add_k(i, i, p * a.transpose() * a);
-    add_k(j, j, p * b.transpose() * b);
-    add_k(i, j, p * a.transpose() * b);
-    add_k(j, i, p * b.transpose() * a);
-    add_f(i, -p * a.transpose() * s0);
-    add_f(j, -p * b.transpose() * s0);
-  }
-};
-
 }  // namespace
 
 Simulation3::Simulation3(Model3 model) : model_(std::move(model)) {
@@ -72,7 +45,7 @@ Simulation3::Simulation3(Model3 model) : model_(std::move(model)) {
 }
 
 std::vector<Vector12d> Simulation3::solve(double dt) const {
-  Assembly sys{dof_, {}, Eigen::VectorXd::Zero(n_dofs_)};
+  Assembly3 sys{dof_, {}, Eigen::VectorXd::Zero(n_dofs_)};
   for (size_t b = 0; b < model_.blocks.size(); ++b) {
     if (dof_[b] < 0) continue;
     const BlockGeometry3 g = block_geometry(model_.blocks[b]);
@@ -84,23 +57,7 @@ std::vector<Vector12d> Simulation3::solve(double dt) const {
     sys.add_k(static_cast<int>(b), static_cast<int>(b), k);
     sys.add_f(static_cast<int>(b), f);
   }
-  const double mu = std::tan(model_.friction_deg * std::numbers::pi / 180);
-  for (const Contact3& c : contacts_) {
-    if (c.state == ContactState3::Open) continue;
-    const ContactGeometry3& g = c.geo;
-    // Normal spring: K += p [en; gn][en; gn]^T, F -= p dn0 [en; gn].
-    sys.add_spring<1>(c.i, c.j, model_.normal_penalty, Eigen::Matrix<double, 1, 1>(g.dn0), g.en.transpose(),
-                      g.gn.transpose());
-    if (c.state == ContactState3::Locked) {
-      sys.add_spring<2>(c.i, c.j, model_.shear_penalty, shear_offset(c), g.es, g.gs);
-    } else {
-      // Sliding: mu N against the slip, on P of block i and the reverse on Q
-      // of block j (es = [t1 t2]^T T_i(P), gs = -[t1 t2]^T T_j(Q)).
-      const double f = mu * c.normal_force;
-      sys.add_f(c.i, -f * g.es.transpose() * c.slip_dir);
-      sys.add_f(c.j, -f * g.gs.transpose() * c.slip_dir);
-    }
-  }
+  for (const Contact3& c : contacts_) add_contact_terms(c, model_, sys);
   Eigen::SparseMatrix<double> k(n_dofs_, n_dofs_);
   k.setFromTriplets(sys.k.begin(), sys.k.end());
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(k);

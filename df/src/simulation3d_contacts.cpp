@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "dda/df/simulation3d.hpp"
+#include "simulation3d_assembly.hpp"
 
 namespace dda::df3 {
 
@@ -86,6 +87,23 @@ std::vector<Contact3> detect_contacts3(const std::vector<Polyhedron>& blocks, co
     }
   }
   return out;
+}
+
+void add_contact_terms(const Contact3& c, const Model3& m, Assembly3& sys) {
+  if (c.state == ContactState3::Open) return;
+  const ContactGeometry3& g = c.geo;
+  // Normal spring: K += p [en; gn][en; gn]^T, F -= p dn0 [en; gn].
+  sys.add_spring<1>(c.i, c.j, m.normal_penalty, Eigen::Matrix<double, 1, 1>(g.dn0), g.en.transpose(),
+                    g.gn.transpose());
+  if (c.state == ContactState3::Locked) {
+    sys.add_spring<2>(c.i, c.j, m.shear_penalty, shear_offset(c), g.es, g.gs);
+    return;
+  }
+  // Sliding: mu N against the slip, on P of block i and the reverse on Q of
+  // block j (es = [t1 t2]^T T_i(P), gs = -[t1 t2]^T T_j(Q)).
+  const double f = std::tan(m.friction_deg * std::numbers::pi / 180) * c.normal_force;
+  sys.add_f(c.i, -f * g.es.transpose() * c.slip_dir);
+  sys.add_f(c.j, -f * g.gs.transpose() * c.slip_dir);
 }
 
 Eigen::Vector2d shear_offset(const Contact3& c) { return tangents(c.geo).transpose() * (c.geo.point_i - c.ref_j); }
