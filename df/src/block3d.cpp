@@ -116,4 +116,17 @@ Vec3 move_point(const Vec3& centroid, const Vector12d& d, const Vec3& x) {
   return centroid + d.segment<3>(kTranslation) + rotation_matrix(d.segment<3>(kRotation)) * rel + strained;
 }
 
+void refresh_geometry(Polyhedron& p) {
+  const BlockGeometry3 g = block_geometry(p.vertices, p.faces);
+  p.volume = g.volume;
+  p.centroid = g.centroid;
+  p.second_moment = g.second_moment;
+  for (auto& f : p.faces) {
+    Vec3 n(0, 0, 0);
+    for (size_t k = 0; k < f.vertices.size(); ++k)
+      n += p.vertices[f.vertices[k]].cross(p.vertices[f.vertices[(k + 1) % f.vertices.size()]]);
+    f.normal = n.normalized();
+  }
+}
+
 }  // namespace dda::df3

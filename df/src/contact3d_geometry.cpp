@@ -96,12 +96,14 @@ void vertex_face_contacts(const Polyhedron& i, const std::vector<Edge>& edges_i,
     int best = -1;
     double best_dn = 0, best_margin = 0;
     bool best_ok = false;
+    std::vector<int> admissible;
     for (int f = 0; f < static_cast<int>(j.faces.size()); ++f) {
       const PolyFace& face = j.faces[f];
       const double dn = face.normal.dot(p - j.vertices[face.vertices[0]]);
       if (std::abs(dn) > opt.reach || !projects_inside(j, face, p, opt.tolerance)) continue;
       const double margin = entry_margin(i, edges_i, v, face.normal);
       const bool ok = margin >= -opt.entry_sin;
+      if (ok) admissible.push_back(f);
       bool better = best < 0 || (ok && !best_ok);
       if (!better && ok == best_ok) {
         if (ok)
@@ -112,15 +114,22 @@ void vertex_face_contacts(const Polyhedron& i, const std::vector<Edge>& edges_i,
       if (better) best = f, best_dn = dn, best_margin = margin, best_ok = ok;
     }
     if (best < 0) continue;
-    const PolyFace& face = j.faces[best];
-    const Vec3& a = j.vertices[face.vertices[0]];
-    ContactCandidate3 c;
-    c.kind = ContactKind3::VertexFace;
-    c.a_is_i = a_is_i;
-    c.vertex = v;
-    c.face = best;
-    c.geo = vertex_face_geometry(p, i.centroid, a, face.normal, j.centroid, j.vertices[face.vertices[1]] - a);
-    out.push_back(c);
+    auto emit = [&](int f, bool preferred) {
+      const PolyFace& face = j.faces[f];
+      const Vec3& a = j.vertices[face.vertices[0]];
+      ContactCandidate3 c;
+      c.kind = ContactKind3::VertexFace;
+      c.a_is_i = a_is_i;
+      c.vertex = v;
+      c.face = f;
+      c.preferred = preferred;
+      c.geo = vertex_face_geometry(p, i.centroid, a, face.normal, j.centroid, j.vertices[face.vertices[1]] - a);
+      out.push_back(c);
+    };
+    emit(best, true);
+    if (opt.alternative_faces)
+      for (int f : admissible)
+        if (f != best) emit(f, false);
   }
 }
 

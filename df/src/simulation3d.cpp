@@ -3,84 +3,186 @@
 #include "dda/df/simulation3d.hpp"
 
 #include "simulation3d_assembly.hpp"
+#include "dda/common/error.hpp"
+#include "dda/df/runaway.hpp"
 
-#include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
+
+#include "dda/df/block_system.hpp"  // parallel_grain
 
 namespace dda::df3 {
 
 namespace {
 
-// Newell's normal of a face loop, unit (outward for the stored loop order).
-Vec3 face_normal(const std::vector<Vec3>& v, const std::vector<int>& loop) {
-  Vec3 n(0, 0, 0);
-  for (size_t k = 0; k < loop.size(); ++k) n += v[loop[k]].cross(v[loop[(k + 1) % loop.size()]]);
-  return n.normalized();
-}
-
-// Volume, centroid, second moment and face normals from the vertices.
-void refresh(Polyhedron& p) {
-  const BlockGeometry3 g = block_geometry(p.vertices, p.faces);
-  p.volume = g.volume;
-  p.centroid = g.centroid;
-  p.second_moment = g.second_moment;
-  for (auto& f : p.faces) f.normal = face_normal(p.vertices, f.vertices);
+// The free-block pairs of the contacts, in contact order (K's pattern
+// follows from them; open contacts count too, so it holds while their
+// states change).
+std::vector<std::pair<int, int>> contact_pairs(const std::vector<Contact3>& contacts, const std::vector<int>& dof) {
+  std::vector<std::pair<int, int>> pairs;
+  pairs.reserve(contacts.size());
+  for (const Contact3& c : contacts)
+    if (dof[c.i] >= 0 && dof[c.j] >= 0) pairs.emplace_back(c.i, c.j);
+  return pairs;
 }
 
 }  // namespace
 
-Simulation3::Simulation3(Model3 model) : model_(std::move(model)) {
+Eigen::SparseMatrix<double> block_lower_pattern(const std::vector<int>& dof, int n_dofs,
+                                                const std::vector<std::pair<int, int>>& pairs) {
+  // Neighbours after each block column, as first unknowns, sorted and unique.
+  const int columns = n_dofs / kDofs;
+  std::vector<std::vector<int>> below(static_cast<std::size_t>(columns));
+  for (const auto& [i, j] : pairs) {
+    const int lo = std::min(dof[i], dof[j]), hi = std::max(dof[i], dof[j]);
+    if (lo >= 0 && lo != hi) below[lo / kDofs].push_back(hi);
+  }
+  std::size_t nnz = 0;
+  for (auto& rows : below) {
+    std::sort(rows.begin(), rows.end());
+    rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+    nnz += kDofs * (kDofs + 1) / 2 + kDofs * kDofs * rows.size();
+  }
+  Eigen::SparseMatrix<double> k(n_dofs, n_dofs);
+  k.resizeNonZeros(static_cast<Eigen::Index>(nnz));
+  int* outer = k.outerIndexPtr();
+  int* inner = k.innerIndexPtr();
+  int at = 0;
+  for (int b = 0; b < columns; ++b)
+    for (int c = 0; c < kDofs; ++c) {
+      outer[kDofs * b + c] = at;
+      for (int r = c; r < kDofs; ++r) inner[at++] = kDofs * b + r;
+      for (const int first : below[b])
+        for (int r = 0; r < kDofs; ++r) inner[at++] = first + r;
+    }
+  outer[n_dofs] = at;
+  std::fill(k.valuePtr(), k.valuePtr() + nnz, 0.0);
+  return k;
+}
+
+Simulation3::Simulation3(Model3 model) : model_(std::move(model)), solver_(df::make_cholmod_solver()) {
   const size_t n = model_.blocks.size();
   if (model_.fixed.empty()) model_.fixed.assign(n, false);
   if (model_.fixed.size() != n) throw std::invalid_argument("Model3: fixed must have one entry per block");
   for (size_t b = 0; b < n; ++b) {
-    refresh(model_.blocks[b]);
+    refresh_geometry(model_.blocks[b]);
     dof_.push_back(model_.fixed[b] ? -1 : n_dofs_);
     if (!model_.fixed[b]) n_dofs_ += kDofs;
   }
   velocity_.assign(n, Vector12d::Zero());
   stress_.assign(n, Vector6d::Zero());
+  known_.assign(n, Vector12d::Zero());
+  if (model_.earthquake.motion && !model_.earthquake.mode)
+    throw std::invalid_argument("Model3: an earthquake needs its mode (loading or displacement)");
+  make_friction_laws();
+  index_points();
+  // w0: half the largest side of the model's bounding box (the 2D solver
+  // takes half the height); it scales the displacement limit of a step.
+  Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
+  for (const auto& p : model_.blocks)
+    for (const auto& v : p.vertices) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+  w0_ = n > 0 ? 0.5 * (hi - lo).maxCoeff() : 1.0;
+  const Control3& c = model_.control;
+  if (!(c.dt > 0) || !(c.max_displacement_ratio > 0) || !(c.min_dt_ratio > 0 && c.min_dt_ratio <= 1) ||
+      c.total_time < 0 || c.steps < 0)
+    throw InputError("3D control: dt, max_displacement_ratio and min_dt_ratio must be positive (min_dt_ratio at "
+                     "most 1), total_time and steps not negative.");
 }
 
-std::vector<Vector12d> Simulation3::solve(double dt) const {
-  Assembly3 sys{dof_, {}, Eigen::VectorXd::Zero(n_dofs_)};
-  for (size_t b = 0; b < model_.blocks.size(); ++b) {
-    if (dof_[b] < 0) continue;
-    const BlockGeometry3 g = block_geometry(model_.blocks[b]);
-    Matrix12d k = Matrix12d::Zero();
-    Vector12d f = Vector12d::Zero();
-    add_inertia(g, model_.material.density, velocity_[b], dt, k, f);
-    add_elasticity(g, model_.material, stress_[b], k, f);
-    add_body_force(g, model_.material.density, model_.gravity, f);
-    sys.add_k(static_cast<int>(b), static_cast<int>(b), k);
-    sys.add_f(static_cast<int>(b), f);
-  }
-  for (const Contact3& c : contacts_) add_contact_terms(c, model_, sys);
-  Eigen::SparseMatrix<double> k(n_dofs_, n_dofs_);
-  k.setFromTriplets(sys.k.begin(), sys.k.end());
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(k);
-  if (ldlt.info() != Eigen::Success) throw std::runtime_error("Simulation3: K is singular");
-  const Eigen::VectorXd x = ldlt.solve(sys.f);
+void Simulation3::make_friction_laws() {
+  auto add = [&](const df::JointProperties& joint, const std::string& what) {
+    if (joint.cohesion != 0 || joint.tensile_strength != 0)
+      throw InputError("3D joints: " + what +
+                       " has cohesion or tensile strength, which the 3D solver does not model yet; set them to 0.");
+    friction_.push_back(df::make_friction_law(joint));
+  };
+  for (size_t s = 0; s < model_.joint_sets.size(); ++s) add(model_.joint_sets[s], "joint set " + std::to_string(s));
+  add(model_.default_joint, "the default joint");
+}
+
+std::vector<Vector12d> Simulation3::solve(double dt) {
   std::vector<Vector12d> d(model_.blocks.size(), Vector12d::Zero());
+  Eigen::VectorXd x;
+  {
+    df::ScopedTimer timer(timings_.assembly);
+    std::vector<std::pair<int, int>> pairs = contact_pairs(contacts_, dof_);
+    if (pairs != k_pairs_ || k_lower_.rows() != n_dofs_) {
+      k_lower_ = block_lower_pattern(dof_, n_dofs_, pairs);
+      k_pairs_ = std::move(pairs);
+    } else {
+      std::fill(k_lower_.valuePtr(), k_lower_.valuePtr() + k_lower_.nonZeros(), 0.0);
+    }
+    Assembly3 sys{dof_, k_lower_, Eigen::VectorXd::Zero(n_dofs_)};
+    // Each block writes only its own diagonal block and F segment: the
+    // result does not depend on the number of threads.
+    const int nb = static_cast<int>(model_.blocks.size());
+#pragma omp parallel for schedule(static) if (nb > df::parallel_grain())
+    for (int b = 0; b < nb; ++b) {
+      if (dof_[b] < 0) continue;
+      const BlockGeometry3 g = block_geometry(model_.blocks[b]);
+      Matrix12d k = Matrix12d::Zero();
+      Vector12d f = Vector12d::Zero();
+      add_inertia(g, model_.material.density, velocity_[b], dt, k, f);
+      add_elasticity(g, model_.material, stress_[b], k, f);
+      add_body_force(g, model_.material.density, body_acceleration_, f);
+      add_point_terms(b, dt, g, k, f);
+      sys.add_k(b, b, k);
+      sys.add_f(b, f);
+    }
+    // Contacts share blocks: added in contact order on one thread.
+    for (const Contact3& c : contacts_) add_contact_terms(c, model_, known_, sys);
+    x = std::move(sys.f);
+  }
+  {
+    df::ScopedTimer timer(timings_.solve);
+    x = solver_->solve(k_lower_, x);  // CHOLMOD: InternalError if K is not positive definite
+    ++timings_.solves;
+  }
   for (size_t b = 0; b < d.size(); ++b)
     if (dof_[b] >= 0) d[b] = x.segment<kDofs>(dof_[b]);
   return d;
 }
 
-StepInfo3 Simulation3::step(double dt) {
-  contacts_ = detect_contacts3(model_.blocks, contacts_, model_.contact_reach);
-  StepInfo3 info;
-  std::vector<Vector12d> d;
+void Simulation3::prepare_input(double dt) {
+  body_acceleration_ = model_.gravity;
+  Vec3 foundation(0, 0, 0);
+  if (const auto& eq = model_.earthquake; eq.motion) {
+    body_acceleration_ += eq.mode->body_acceleration(*eq.motion, time_, dt);
+    foundation = eq.mode->foundation_increment(*eq.motion, time_, dt);
+  }
+  for (size_t b = 0; b < known_.size(); ++b)
+    if (dof_[b] < 0) known_[b].segment<3>(kTranslation) = foundation;
+  // A contact that slides on starts the step with the strength its law
+  // gives now (state advanced, this step's dt).
+  for (Contact3& c : contacts_)
+    if (c.state == ContactState3::Sliding) c.strength = law_of(c).strength(friction_input3(c, dt), c.friction);
+}
+
+void Simulation3::detect() {
+  contacts_ = detect_contacts3(model_.blocks, contacts_, model_.contact_reach, model_.contact_merge);
+  const int sets = static_cast<int>(model_.joint_sets.size());
+  for (Contact3& c : contacts_) {
+    const int set = contact_joint_set(model_.blocks, c);
+    c.joint = set >= 0 && set < sets ? set : sets;
+  }
+}
+
+bool Simulation3::iterate(double dt, std::vector<Vector12d>& d, int& iterations) {
+  prepare_input(dt);
   std::vector<int> changes(contacts_.size(), 0);  // state changes of each contact in this step
-  while (info.iterations < model_.max_iterations) {
-    ++info.iterations;
+  iterations = 0;
+  while (iterations < model_.max_iterations) {
+    ++iterations;
     d = solve(dt);
+    for (size_t b = 0; b < d.size(); ++b)
+      if (dof_[b] < 0) d[b] = known_[b];
     bool settled = true;
     for (size_t k = 0; k < contacts_.size(); ++k) {
       Contact3& c = contacts_[k];
-      const ContactState3 s = update_contact3(c, model_, d[c.i], d[c.j], changes[k] >= 2, settled);
+      const ContactState3 s = update_contact3(c, model_, law_of(c), dt, d[c.i], d[c.j], changes[k] >= 2, settled);
       if (s != c.state) {
         settled = false;
         ++changes[k];
@@ -88,19 +190,111 @@ StepInfo3 Simulation3::step(double dt) {
       c.state = s;
     }
     if (settled) {
-      info.converged = true;
-      break;
+      return true;
     }
   }
-  // If not settled, d is from states one update behind the stored ones; the
-  // step is accepted anyway (no dt cut in this increment).
+  return false;  // d is from states one update behind the stored ones
+}
+
+double Simulation3::max_vertex_displacement(const std::vector<Vector12d>& d) const {
+  double most = 0;
+  for (size_t b = 0; b < d.size(); ++b) {
+    if (dof_[b] < 0) continue;
+    const Polyhedron& p = model_.blocks[b];
+    for (const Vec3& v : p.vertices) {
+      const double u = (move_point(p.centroid, d[b], v) - v).norm();
+      if (!std::isfinite(u))
+        throw df::RunawayError("Step " + std::to_string(log_.size() + 1) + " at t = " + std::to_string(time_) +
+                                   " s: the solution for block " + std::to_string(b) +
+                                   " is not a finite number; check the penalties, the time step and the materials.",
+                               static_cast<int>(log_.size()) + 1, time_, static_cast<int>(b));
+      most = std::max(most, u);
+    }
+  }
+  return most;
+}
+
+StepInfo3 Simulation3::record(double dt, const std::vector<Vector12d>& d, int iterations, bool converged,
+                              int cuts) {
+  StepInfo3 info;
+  info.step = static_cast<int>(log_.size()) + 1;
+  info.dt = dt;
+  info.iterations = iterations;
+  info.converged = converged;
+  info.dt_cuts = cuts;
+  info.max_displacement = max_vertex_displacement(d);
   finish_step(d, dt);
+  info.time = time_;
   for (const Contact3& c : contacts_) {
     if (c.state == ContactState3::Open) ++info.open;
     if (c.state == ContactState3::Sliding) ++info.sliding;
     if (c.state == ContactState3::Locked) ++info.locked;
   }
+  log_.push_back(info);
   return info;
+}
+
+StepInfo3 Simulation3::step(double dt) {
+  detect();
+  std::vector<Vector12d> d;
+  int iterations = 0;
+  const bool converged = iterate(dt, d, iterations);
+  return record(dt, d, iterations, converged, 0);
+}
+
+StepInfo3 Simulation3::advance(double max_dt) {
+  const Control3& ctl = model_.control;
+  if (dt_ <= 0) dt_ = ctl.dt;
+  detect();
+  const std::vector<Contact3> start = contacts_;
+  const double dt_min = ctl.min_dt_ratio * ctl.dt;
+  const double limit = ctl.max_displacement_ratio * w0_;
+  int cuts = 0;
+  for (;;) {
+    const bool shortened = max_dt < dt_;
+    const double dt = std::min(dt_, max_dt);
+    contacts_ = start;
+    std::vector<Vector12d> d;
+    int iterations = 0;
+    const bool settled = iterate(dt, d, iterations);
+    double moved = 0;
+    try {
+      moved = max_vertex_displacement(d);  // RunawayError for a solution that is not finite
+    } catch (...) {
+      contacts_ = start;
+      throw;
+    }
+    const bool too_far = moved > limit;
+    if ((!settled || too_far) && dt > dt_min * (1 + 1e-9)) {
+      // Redo with a smaller step: to what the displacement limit allows, or
+      // by 3 when the contact states did not settle (the 2D rule).
+      dt_ = std::max(dt_min, dt * (too_far ? std::min(0.5, 0.9 * limit / moved) : 1.0 / 3.0));
+      ++cuts;
+      continue;
+    }
+    if (too_far && moved > 2 * w0_) {
+      contacts_ = start;  // the state before the step, for the checkpoint written after this
+      throw df::RunawayError("Step " + std::to_string(log_.size() + 1) + " at t = " + std::to_string(time_) +
+                                 " s: a block moves " + std::to_string(moved) +
+                                 " m in one step at the smallest time step, more than the model's size; check the "
+                                 "penalties, the time step and the loads.",
+                             static_cast<int>(log_.size()) + 1, time_, -1);
+    }
+    const StepInfo3 info = record(dt, d, iterations, settled, cuts);
+    // Easy steps let dt grow back gradually toward the user's dt.
+    if (!shortened && cuts == 0) dt_ = std::min(ctl.dt, dt_ * 1.1);
+    return info;
+  }
+}
+
+bool Simulation3::finished() const {
+  const Control3& c = model_.control;
+  if (c.total_time > 0) return time_ >= c.total_time * (1 - 1e-12);
+  return static_cast<int>(log_.size()) >= c.steps;
+}
+
+void Simulation3::run() {
+  while (!finished()) advance(model_.control.total_time > 0 ? model_.control.total_time - time_ : 1e300);
 }
 
 void Simulation3::finish_step(const std::vector<Vector12d>& d, double dt) {
@@ -110,19 +304,43 @@ void Simulation3::finish_step(const std::vector<Vector12d>& d, double dt) {
   for (Contact3& c : contacts_) {
     // Shear anchors ride on block j (before its centroid moves).
     c.ref_j = move_point(old_centroid[c.j], d[c.j], c.ref_j);
+    c.point_now = move_point(old_centroid[c.i], d[c.i], c.geo.point_i);
     // A contact still sliding forwards slides on along this step's slip.
     if (c.state == ContactState3::Sliding && c.slip.dot(c.slip_dir) > model_.tolerance)
       c.slip_dir = c.slip.normalized();
+    // The law's memory over the accepted step (as the 2D solver).
+    df::FrictionInput in = friction_input3(c, dt);
+    in.slip_sign = slip_sign3(c);
+    law_of(c).advance(in, c.friction);
+    if (c.state == ContactState3::Sliding) c.friction.slip += c.slip_velocity * dt;
   }
   for (size_t b = 0; b < model_.blocks.size(); ++b) {
-    if (dof_[b] < 0) continue;
+    if (dof_[b] < 0) {  // a fixed block moves only with a moving foundation, rigidly
+      if (d[b].isZero()) continue;
+      velocity_[b].setZero();
+      velocity_[b].segment<3>(kTranslation) = model_.earthquake.motion->velocity(time_ + dt);
+      Polyhedron& p = model_.blocks[b];
+      for (auto& v : p.vertices) v += d[b].segment<3>(kTranslation);
+      refresh_geometry(p);  // from the vertices, as restore() does: a resumed run stays bit for bit
+      continue;
+    }
     velocity_[b] = 2.0 / dt * d[b] - velocity_[b];  // constant acceleration in the step
     stress_[b] += dmat * d[b].segment<6>(kStrain);
     Polyhedron& p = model_.blocks[b];
     for (auto& v : p.vertices) v = move_point(old_centroid[b], d[b], v);  // exact rotation
-    refresh(p);
+    refresh_geometry(p);
   }
+  auto carry = [&](std::vector<Vec3>& at, auto block_of) {
+    for (size_t p = 0; p < at.size(); ++p) {
+      const int b = block_of(p);
+      at[p] = move_point(old_centroid[static_cast<size_t>(b)], d[static_cast<size_t>(b)], at[p]);
+    }
+  };
+  carry(fixed_at_, [&](size_t p) { return model_.fixed_points[p].block; });
+  carry(load_at_, [&](size_t p) { return model_.loads[p].block; });
+  carry(measure_at_, [&](size_t p) { return model_.measurements[p].block; });
   time_ += dt;
+  sample_measurements();
 }
 
 }  // namespace dda::df3

@@ -11,10 +11,8 @@
 // rests on are fixed. Two layouts of the fixed blocks (see Layout below):
 // the blocks of the same cut, whose faces on A and B are exactly the wedge's
 // faces (every wedge corner on a corner of the face it rests on), and larger
-// half-space blocks whose faces reach past the wedge's. The step handles
-// only the second (DISABLED_ test below: with shared corners the contacts
-// at the corners switch faces between steps, each switch starts a new open
-// contact without its shear spring, and the wedge creeps at phi = 30).
+// half-space blocks whose faces reach past the wedge's. Both must give V4;
+// the first is the hard one for contact identity (see the tests at the end).
 //
 // Expected numbers (all from CASES.md V4 unless said):
 // * line of intersection: trend 000.5, plunge psi = 27.63 deg;
@@ -43,6 +41,8 @@
 #include <cstdio>
 #include <numbers>
 
+#include "dda/common/error.hpp"
+#include "dda/analysis/sliding3d.hpp"
 #include "dda/dc/cut3d.hpp"
 #include "dda/df/simulation3d.hpp"
 #include "dda/dl/dfn3d.hpp"
@@ -71,8 +71,7 @@ struct WedgeModel {
   double weight = 0;  // N
 };
 
-// Layout::SharedCorners: every block of the one cut (the block below both
-// planes left out). Layout::LargerFaces: the wedge from that cut, the fixed
+// Layout::SharedCorners: every block of the one cut. Layout::LargerFaces: the wedge from that cut, the fixed
 // blocks the half-spaces below A and below B of a larger box (x in [-8, 8],
 // y in [-2, 12], z in [0, 12]), cut by A alone and by B alone; they overlap
 // each other (fixed-fixed pairs carry nothing) and their faces on A and B
@@ -93,15 +92,11 @@ WedgeModel build(double phi_deg, double penalty, Layout layout = Layout::LargerF
   fm.fractures = {persistent_plane(w.nA, T, 0), persistent_plane(w.nB, T, 1)};
   const auto cut = dc::cut_blocks_3d(fm);
   Model3& m = w.model;
-  // The block below both planes touches the wedge only along the line of
-  // intersection (no shared face; it carries nothing in V4); it is left out
-  // because two collinear edges make a degenerate edge-edge contact
-  // (see the report of this test).
-  for (const Polyhedron& p : cut.model.blocks) {
-    bool below = true;
-    for (const Vec3& v : p.vertices) below = below && w.nA.dot(v - T) < 1e-9 && w.nB.dot(v - T) < 1e-9;
-    if (!below) m.blocks.push_back(p);
-  }
+  // All four blocks of the cut, the one below both planes included: it
+  // touches the wedge only along the line of intersection (collinear edges,
+  // no edge-edge contact; the corners T and D give contacts that carry
+  // nothing in V4).
+  m.blocks = cut.model.blocks;
   if (layout == Layout::LargerFaces) {
     std::vector<Polyhedron> keep;
     for (const Polyhedron& p : m.blocks) {
@@ -131,7 +126,7 @@ WedgeModel build(double phi_deg, double penalty, Layout layout = Layout::LargerF
   }
   if (w.wedge >= 0) w.weight = kRho * kG * m.blocks[static_cast<std::size_t>(w.wedge)].volume;
   m.material = {kRho, 1e10, 0.25};
-  m.friction_deg = phi_deg;
+  m.default_joint.friction_deg = phi_deg;
   m.normal_penalty = penalty;
   m.shear_penalty = penalty;
   m.gravity = {0, 0, -kG};
@@ -245,16 +240,111 @@ TEST(Simulation3Wedge, HoldsWithThirtyDegreesV4) {
   EXPECT_EQ(r.unconverged, 0);
 }
 
-// With the fixed blocks of the same cut (shared corners) the step does not
-// reproduce V4 (pn 1e9 or 1e10, dt 1 ms): phi = 30 creeps 0.0226 m (pn 1e9)
-// or 0.0104 m (pn 1e10) in 0.5 s, and at pn 1e9 phi = 10 slides 0.3205 m
-// (+8 %) with N_A, N_B = 0.67, 0.65 W. Kept to show the limitation.
-TEST(Simulation3Wedge, DISABLED_HoldsWithSharedCornersV4) {
+// The fixed blocks of the same cut: every wedge corner sits on a corner of
+// the face it rests on, and the contact search sees each such point now as
+// a wedge vertex on a support face, now as a support vertex on a wedge face
+// or an edge crossing (detect_contacts3, "Identity"). Before contacts kept
+// their identity through those switches, phi = 30 crept 0.0104 m in 0.5 s
+// (each switch restarted a contact without its shear spring) and phi = 10
+// slid 8 % too far at pn = 1e9.
+TEST(Simulation3Wedge, HoldsWithSharedCornersV4) {
   const WedgeModel w = build(30, kPenalty, Layout::SharedCorners);
   ASSERT_GE(w.wedge, 0);
   const WedgeResult r = run(w, 1e-3, 0.5);
   print("V4 phi=30 shared corners", w, r, 0.0);
   EXPECT_LT(std::abs(r.along), 1e-4);
+  EXPECT_LT(r.off, 1e-4);
+  EXPECT_EQ(r.unconverged, 0);
+}
+
+TEST(Simulation3Wedge, SlidesWithSharedCornersV4) {
+  const double a = 2.3731, t = 0.5, expected = 0.5 * a * t * t;  // CASES.md V4, phi = 10
+  const WedgeModel w = build(10, kPenalty, Layout::SharedCorners);
+  ASSERT_GE(w.wedge, 0);
+  const WedgeResult r = run(w, 1e-3, t);
+  print("V4 phi=10 shared corners", w, r, expected);
+  EXPECT_NEAR(r.along, expected, 0.02 * expected);
+  EXPECT_LT(r.off, 0.01 * std::abs(r.along));
+  EXPECT_NEAR(r.mean_na / w.weight, 0.629, 0.05 * 0.629);
+  EXPECT_NEAR(r.mean_nb / w.weight, 0.629, 0.05 * 0.629);
+  EXPECT_EQ(r.unconverged, 0);
+}
+
+// A checkpoint (Simulation3::state / restore) continues the run exactly:
+// the sliding V4 wedge stopped after 150 steps and resumed in a new
+// simulation ends where the uninterrupted run ends, to the last bit.
+TEST(Simulation3Wedge, RestoredStateContinuesExactly) {
+  const WedgeModel w = build(10, kPenalty, Layout::SharedCorners);
+  Simulation3 whole(w.model), first(w.model);
+  for (int s = 0; s < 300; ++s) whole.step(1e-3);
+  for (int s = 0; s < 150; ++s) first.step(1e-3);
+  Simulation3 resumed(w.model);
+  resumed.restore(first.state());
+  for (int s = 150; s < 300; ++s) resumed.step(1e-3);
+  const auto k = static_cast<std::size_t>(w.wedge);
+  EXPECT_EQ(resumed.blocks()[k].vertices, whole.blocks()[k].vertices);
+  EXPECT_EQ(resumed.velocities()[k], whole.velocities()[k]);
+  EXPECT_EQ(resumed.contacts().size(), whole.contacts().size());
+  EXPECT_EQ(resumed.log().size(), 300u);
+  // A state of another model is refused.
+  Simulation3 other(build(10, kPenalty, Layout::LargerFaces).model);
+  EXPECT_THROW(other.restore(first.state()), InputError);
+}
+
+// The shaking-table test of the seed report (chapter 2) on the V4 wedge:
+// the table moves north-south at 2 Hz, ramped up over 5 s, 10 s in all.
+// Expected: the 3D analytical double-face solution (`dda sliding3d`, run
+// here with dt = 1e-4); DDA in both input modes within 5 % of it
+// (measured: -2.4 % loading, -4.0 % displacement mode). The stick-slip
+// sequence is sensitive to round-off: recomputing the moving foundation's
+// centroid from its vertices instead of translating it moved the
+// displacement-mode result from -2.7 % to -4.0 %, so the bound leaves room
+// for another machine's BLAS; a softer penalty (1e10) is +7 %.
+//
+// Amplitude 0.30 g, 45 % above the rigid yield acceleration 0.2074 g
+// (CASES.md): 122.65 mm along the line. Near the yield acceleration the
+// comparison measures something else: DDA's wedge rests on eight elastic
+// point contacts whose locked shear springs also carry force across the
+// line of intersection, so its normal forces at rest are not the limit-
+// equilibrium 0.629 W (0.60 and 0.58 W here) and slip starts at a lower
+// acceleration than the rigid wedge's. At 0.22 g (the seed's 6 % margin)
+// DDA slides 5.9 mm against 2.66 mm; at 0.18 g, below the rigid yield,
+// 0.02-0.09 mm (docs/solver3d.md). Penalty 1e11.
+TEST(Simulation3Wedge, ShakingTableMatchesTheAnalyticalSolutionV4) {
+  const double t_end = 10, amplitude = 0.30 * kG, omega = 2 * std::numbers::pi * 2, ramp = 5;
+  auto ground = [&](double t) { return Vec3(0, amplitude * std::sin(omega * t) * std::min(t / ramp, 1.0), 0); };
+  analysis::SlidingModel am;
+  am.planes = {analysis::Plane{51.4, 65.8}, analysis::Plane{51.4, 295.2}};
+  am.friction = {analysis::FrictionLaw::constant_angle(30), analysis::FrictionLaw::constant_angle(30)};
+  am.input.body = [&](double t) { return Vec3(-ground(t)); };
+  am.input.duration = t_end;
+  am.gravity = kG;
+  const auto run = analysis::run_sliding(am, 1e-4, t_end);
+  const Vec3 line(run.reference.x(), run.reference.y(), run.reference.z());
+  const double expected = run.samples.back().u.dot(line);
+  EXPECT_NEAR(expected, 122.65e-3, 0.1e-3);  // `dda sliding3d ... --sine 0.30 --freq 2 --axis y --ramp 5`
+  std::vector<double> t;
+  std::vector<Vec3> a;
+  for (int k = 0; k <= 10000; ++k) t.push_back(k * 1e-3), a.push_back(ground(k * 1e-3));
+  const auto motion = std::make_shared<GroundMotion3>(t, a);
+  for (const char* mode : {"loading", "displacement"}) {
+    WedgeModel w = build(30, 1e11, Layout::SharedCorners);
+    w.model.earthquake = {motion, make_ground_input_mode3(mode)};
+    Simulation3 sim(w.model);
+    const auto k = static_cast<std::size_t>(w.wedge);
+    std::size_t base = k == 0 ? 1 : 0;
+    const Vec3 c0 = sim.blocks()[k].centroid, b0 = sim.blocks()[base].centroid;
+    int unconverged = 0;
+    const double dt = 1e-3;
+    for (int s = 0; s < std::lround(t_end / dt); ++s) unconverged += sim.step(dt).converged ? 0 : 1;
+    const Vec3 u = (sim.blocks()[k].centroid - c0) - (sim.blocks()[base].centroid - b0);
+    std::printf("V4 shaking table, %s mode: %.4f mm along the line (analytical %.4f mm), %.2f %%, off-line %.2e m\n",
+                mode, 1e3 * u.dot(line), 1e3 * expected, 100 * (u.dot(line) - expected) / expected,
+                (u - u.dot(line) * line).norm());
+    EXPECT_NEAR(u.dot(line), expected, 0.05 * expected) << mode;
+    EXPECT_LT((u - u.dot(line) * line).norm(), 0.01 * expected) << mode;
+    EXPECT_EQ(unconverged, 0) << mode;
+  }
 }
 
 }  // namespace

@@ -52,6 +52,9 @@ struct BlockGeometry3 {
 BlockGeometry3 block_geometry(const Polyhedron& p);
 // Recomputed from moved vertices (faces as in Polyhedron, outward loops).
 BlockGeometry3 block_geometry(const std::vector<Vec3>& vertices, const std::vector<PolyFace>& faces);
+// Volume, centroid, second moment and face normals (Newell, outward for the
+// stored loop order) recomputed from the vertices.
+void refresh_geometry(Polyhedron& p);
 
 // T at point x of a block whose centroid is `centroid`.
 Matrix3x12d displacement_matrix(const Vec3& x, const Vec3& centroid);

@@ -15,4 +15,9 @@ namespace dda::df {
 // `margin` on every side.
 std::vector<std::pair<int, int>> broad_phase(const std::vector<Box2>& boxes, double margin);
 
+// The same grid in any dimension: Box has Eigen vectors `lo` and `hi`.
+// Instantiated for Box2 (above) and Box3 (df3::broad_phase3, broad_phase3d.hpp).
+template <class Box>
+std::vector<std::pair<int, int>> grid_broad_phase(const std::vector<Box>& boxes, double margin);
+
 }  // namespace dda::df

@@ -72,6 +72,7 @@ struct ContactCandidate3 {
   int vertex = -1;     // vertex-face: vertex of i
   int face = -1;       // vertex-face: face of j
   int edge_i[2] = {-1, -1}, edge_j[2] = {-1, -1};  // edge-edge: vertex indices P1 P2, Q1 Q2
+  bool preferred = true;  // false: another face of the same vertex (Contact3Options::alternative_faces)
   ContactGeometry3 geo;
 };
 
@@ -81,12 +82,17 @@ struct Contact3Options {
   double parallel_sin = 1e-6;  // edges with |a x b| <= this |a||b| are parallel: no edge-edge contact
   double cone_tol = 1e-9;    // slack of the edge-edge normal-cone test (cosine units)
   double entry_sin = 0.087;  // sin 5 deg: how far i's edges at a vertex may dip into a face (see .cpp)
+  // Also report the other admissible faces a vertex projects onto (a vertex
+  // on an edge or corner of the other block), with preferred = false, so a
+  // solver can keep the face a contact already had (simulation3d.hpp).
+  bool alternative_faces = false;
 };
 
 // Candidate contacts between convex polyhedra a and b, both ways (vertices of
 // a on faces of b and vertices of b on faces of a; each crossing edge pair
 // once, with a's edge as i). Vertices and centroids are taken as stored.
-// Each vertex gets at most one face of the other block (rule in the .cpp).
+// Each vertex gets at most one face of the other block (rule in the .cpp),
+// unless opt.alternative_faces.
 std::vector<ContactCandidate3> find_contacts3(const Polyhedron& a, const Polyhedron& b, const Contact3Options& opt);
 
 }  // namespace dda::df3

@@ -3,32 +3,72 @@
 // convex polyhedral blocks with twelve unknowns each (block3d.hpp), contacts
 // from find_contacts3 (contact3d_geometry.hpp) kept across steps with their
 // open / sliding / locked state, one global sparse system per open-close
-// iterate, solved with Eigen::SimplicialLDLT.
+// iterate, solved by CHOLMOD (its analysis kept while the pattern holds).
+// Candidate pairs come from a uniform grid (broad_phase3d.hpp); block terms
+// and contact search run on all OpenMP threads, with the same result on any
+// number of them.
 //
-// Left out on purpose (first increment): step control (dt is the caller's),
-// broad phase (all pairs whose boxes are within reach), cohesion / tensile
-// strength, friction laws other than constant Coulomb, dynamic input, fixed
-// and load points, outputs.
+// Friction: every law of the 2D solver (friction.hpp, friction_laws.hpp),
+// per joint set of the faces in contact, through the same FrictionLaw
+// interface: the law gives the strength from the normal force and the slip
+// speed of the current iterate, and advances its state once per step.
+//
+// Left out on purpose (so far): step control (dt is the caller's), cohesion
+// and tensile strength (a contact point stands for an area 3D does not
+// apportion yet), fixed and load points, outputs.
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <memory>
+#include <utility>
 #include <vector>
 
 #include "dda/common/polyhedron_model.hpp"
 #include "dda/df/block3d.hpp"
 #include "dda/df/contact3d_geometry.hpp"
+#include "dda/df/friction.hpp"
+#include "dda/df/ground_motion3.hpp"
+#include "dda/df/points3d.hpp"
+#include "dda/df/linear_solver.hpp"
+#include "dda/df/step_timings.hpp"
 
 namespace dda::df3 {
+
+// Time stepping of Simulation3::advance / run (the 2D Control's rules).
+struct Control3 {
+  double dt = 1e-3;                     // s, the step it starts with and grows back to
+  double total_time = 0;                // s, the run's end (or `steps`)
+  int steps = 0;
+  double max_displacement_ratio = 0.01; // no vertex moves more than this times w0 in a step (else dt is cut)
+  double min_dt_ratio = 1e-3;           // dt is never cut below this times dt
+};
 
 struct Model3 {
   std::vector<Polyhedron> blocks;  // convex; volume / centroid / second_moment are recomputed
   std::vector<bool> fixed;         // fixed blocks have no unknowns (d = 0); empty = none fixed
   Material3 material;
-  double friction_deg = 30;        // Coulomb friction angle of every contact
+  // Joint properties by the joint set of the faces in contact (PolyFace::set;
+  // index = set id); faces of other sets (boundary, excavation, none given)
+  // use default_joint. Only the friction is read (law, angle, parameters);
+  // cohesion and tensile strength must be 0, the penalties are below.
+  std::vector<df::JointProperties> joint_sets;
+  df::JointProperties default_joint;
   double normal_penalty = 1e9;     // N/m, per contact point
   double shear_penalty = 1e9;      // N/m, per contact point
   Vec3 gravity{0, 0, -9.81};       // m/s^2
+  GroundInput3 earthquake;         // none while earthquake.motion is null; the fixed blocks are the foundation
+  std::vector<FixedPoint3> fixed_points;  // on free blocks
+  std::vector<PointLoad3> loads;          // on free blocks
+  std::vector<MeasurementPoint3> measurements;
   double contact_reach = 0.01;     // m: contacts with |dn0| <= reach are tracked
-  double tolerance = 1e-8;         // m: open-close band (as law.tolerance in 2D)
-  int max_iterations = 10;         // open-close iterations per step
+  double contact_merge = 1e-3;     // m: one pair's candidates closer than this are one contact (see detect_contacts3)
+  // m: open-close band (as ContactLaw::tolerance in 2D). A locked contact
+  // slides only when its spring pulls ps * tolerance past the strength, so
+  // the band must stay far below the weights' share per contact: at 1e-8 m
+  // and ps = 1e11 that was 1 kN, 4 % of a 1 m cube's weight, and V3 in 3D
+  // slid 3 % short (0.5 % at 1e-11).
+  double tolerance = 1e-11;
+  int max_iterations = 10;         // open-close iterations per step (then advance() cuts dt)
+  Control3 control;
 };
 
 enum class ContactState3 { Open, Sliding, Locked };
@@ -41,25 +81,50 @@ struct Contact3 {
   ContactState3 state = ContactState3::Open;
   ContactGeometry3 geo;            // at the start of the current step
   Vec3 ref_j{0, 0, 0};             // shear-spring anchor on block j (world, moves with j)
+  Vec3 point_now{0, 0, 0};         // P carried with block i to the end of the last step (identity, see detect_contacts3)
   Eigen::Vector2d slip_dir{1, 0};  // sliding: unit slip of i relative to j on (t1, t2), fixed in a step
   Eigen::Vector2d slip{0, 0};      // closed: slip of i relative to j in the last iterate (m)
   double normal_force = 0;         // N, compression positive (last iterate)
   Eigen::Vector2d shear_force{0, 0};  // N on i, (t1, t2), last iterate
+  int joint = 0;                   // index into the laws: joint set, or joint_sets.size() for the default
+  double strength = 0;             // N, the law's shear strength at the last iterate's N and slip speed
+  double slip_velocity = 0;        // m/s, |slip| / dt in the last iterate (closed contacts)
+  Vec3 slip_axis{0, 0, 0};         // world direction of the first slip: the sign of later slip along it
+                                   // is the 2D slip_sign the laws count reversals with (degradation)
+  df::FrictionState friction;      // the law's memory, carried with the contact
 };
 
+// One accepted step.
 struct StepInfo3 {
-  int iterations = 0;
+  int step = 0;                    // 1 = first
+  double time = 0, dt = 0;         // s, at the end of the step; its length
+  int iterations = 0;              // open-close iterations (of the accepted attempt)
   bool converged = false;          // states (and sliding forces) settled within max_iterations
+  int dt_cuts = 0;                 // attempts redone with a shorter step
+  double max_displacement = 0;     // m, largest vertex displacement
   int open = 0, sliding = 0, locked = 0;
 };
 
 // Contact helpers (simulation3d_contacts.cpp), public so tests can use them.
 
-// Candidates of every pair of blocks whose boxes are within `reach`, with the
-// state of the matching contact of `previous` (same i, j, kind and ids); new
-// contacts start open. The anchor, slip direction and forces carry over.
+// The contacts of every pair of blocks whose boxes are within `reach`.
+//
+// Identity. A contact is the material point P where two blocks touch, not
+// the features that describe it: where a corner of one block sits on a
+// corner or edge of the other (every corner of a wedge cut from the same
+// planes as its supports), the candidate search finds the same point as a
+// vertex of i on a face of j, a vertex of j on a face of i, or an edge pair,
+// and which one it reports changes from step to step with round-off and
+// tiny motions. So (1) the candidates of one pair closer than `merge` to
+// each other are one contact (the one continuing a previous contact if any,
+// else vertex-face before edge-edge, in search order), and (2) a contact
+// inherits state, shear anchor, slip direction and forces from the previous
+// contact of the same pair whose point (carried with its block) is nearest,
+// within `merge`, whichever kind or orientation either has; each previous
+// contact passes on at most once. Without this a switch restarted the
+// contact open without its shear spring, and the V4 wedge crept at phi = 30.
 std::vector<Contact3> detect_contacts3(const std::vector<Polyhedron>& blocks, const std::vector<Contact3>& previous,
-                                       double reach);
+                                       double reach, double merge);
 
 // Open-close rule for one contact given the iterate's increments of its two
 // blocks (zero for a fixed block); returns the new state and updates anchor,
@@ -67,38 +132,114 @@ std::vector<Contact3> detect_contacts3(const std::vector<Polyhedron>& blocks, co
 // friction force moved more than 0.1 % since the previous iterate. `hold` (the 2D rule): a contact that already changed state twice
 // in this step may no longer open or re-lock, so cycles between near-limit
 // states end (it can still go locked -> sliding).
-ContactState3 update_contact3(Contact3& c, const Model3& m, const Vector12d& di, const Vector12d& dj, bool hold,
+ContactState3 update_contact3(Contact3& c, const Model3& m, const df::FrictionLaw& law, double dt,
+                              const Vector12d& di, const Vector12d& dj, bool hold,
                               bool& settled);
+
+// What a friction law sees at the contact (normal force and slip speed of
+// the last iterate); slip_sign3 is +1 / -1 for slip along / against the
+// contact's slip_axis while sliding, else 0.
+df::FrictionInput friction_input3(const Contact3& c, double dt);
+int slip_sign3(const Contact3& c);
+
+// The joint set (PolyFace::set) of the faces in contact; negative if none.
+int contact_joint_set(const std::vector<Polyhedron>& blocks, const Contact3& c);
 
 // Tangential stretch of the shear spring at the start of the step (t1, t2).
 Eigen::Vector2d shear_offset(const Contact3& c);
+
+// Everything that changes in a run (a checkpoint): with the same Model3,
+// restore() continues exactly where state() was taken. Of each contact's
+// geometry only the normal, tangents and the two points are needed (the
+// next step's detection recomputes the rest).
+struct Simulation3State {
+  double time = 0;
+  double dt = 0;                                  // advance()'s current step
+  std::vector<std::vector<Vec3>> vertices;        // per block
+  std::vector<Vector12d> velocity;
+  std::vector<Vector6d> stress;
+  std::vector<Contact3> contacts;
+  std::vector<StepInfo3> log;
+  std::vector<Vec3> fixed_at, load_at, measure_at;
+  std::vector<std::vector<MeasurementSample3>> histories;
+};
 
 class Simulation3 {
  public:
   explicit Simulation3(Model3 model);
 
-  // One step of length dt (s); vertices, velocities, stresses and contact
-  // anchors are updated at the end.
+  // One step of length dt (s), accepted whatever happens; vertices,
+  // velocities, stresses and contact anchors are updated at the end.
   StepInfo3 step(double dt);
+  // One step with step control (Model3::control): dt cut by 3 when the
+  // contacts do not settle, or to what the displacement limit allows, and
+  // grown back by 10 % a step; never longer than max_dt. RunawayError for a
+  // solution that is not finite or moves more than the model at dt_min.
+  StepInfo3 advance(double max_dt = 1e300);
+  bool finished() const;  // total_time reached, or `steps` steps taken
+  void run();             // advance() until finished()
+  Simulation3State state() const;
+  // InputError if the state does not fit the model (block, vertex or point counts).
+  void restore(const Simulation3State& s);
+  const std::vector<StepInfo3>& log() const { return log_; }
 
   const std::vector<Polyhedron>& blocks() const { return model_.blocks; }
   const std::vector<Vector12d>& velocities() const { return velocity_; }
   const std::vector<Vector6d>& stresses() const { return stress_; }
   const std::vector<Contact3>& contacts() const { return contacts_; }
+  const Model3& model() const { return model_; }
+  // Per measurement point (model order): sample 0 at the start, then one per step.
+  const std::vector<std::vector<MeasurementSample3>>& histories() const { return histories_; }
   double time() const { return time_; }
+  // Wall time of assembly and solves, summed over all steps (contact_search
+  // and total are not filled: bench/bench_df3d.cpp times those itself).
+  const df::StepTimings& timings() const { return timings_; }
 
  private:
+  void detect();                     // contacts at the start of the step, with their joints
+  void prepare_input(double dt);     // body acceleration, foundation motion, sliding strengths
+  // Open-close iteration of one attempt; true if the states settled.
+  bool iterate(double dt, std::vector<Vector12d>& d, int& iterations);
+  double max_vertex_displacement(const std::vector<Vector12d>& d) const;
+  StepInfo3 record(double dt, const std::vector<Vector12d>& d, int iterations, bool converged, int cuts);
   // Solves K d = F for the current states; returns all blocks' increments.
-  std::vector<Vector12d> solve(double dt) const;
+  std::vector<Vector12d> solve(double dt);
   void finish_step(const std::vector<Vector12d>& d, double dt);
+  // One law per joint set, then the default joint's (friction_).
+  void make_friction_laws();
+  // Points: checked and indexed by block in the constructor; their springs
+  // and loads enter block b's terms; they move with their blocks.
+  void index_points();
+  void add_point_terms(int b, double dt, const BlockGeometry3& g, Matrix12d& k, Vector12d& f) const;
+  void sample_measurements();
+  const df::FrictionLaw& law_of(const Contact3& c) const { return *friction_[static_cast<size_t>(c.joint)]; }
 
   Model3 model_;
+  // The step's input: gravity plus the earthquake's body acceleration on
+  // free blocks, and the known increments of fixed blocks (zero, or the
+  // foundation's translation in displacement mode).
+  Vec3 body_acceleration_{0, 0, 0};
+  std::vector<Vector12d> known_;
   std::vector<int> dof_;  // first unknown of each block, -1 if fixed
   int n_dofs_ = 0;
   std::vector<Vector12d> velocity_;
   std::vector<Vector6d> stress_;
   std::vector<Contact3> contacts_;
+  std::vector<StepInfo3> log_;
+  double dt_ = 0;   // current step of advance()
+  double w0_ = 1;   // m, the reference length of the displacement limit
+  std::vector<std::unique_ptr<df::FrictionLaw>> friction_;
+  std::vector<std::vector<int>> fixed_of_block_, loads_of_block_;  // point indices per block
+  std::vector<Vec3> fixed_at_, load_at_, measure_at_;              // where the material points are now
+  std::vector<std::vector<MeasurementSample3>> histories_;
   double time_ = 0;
+  // K's lower triangle, its pattern kept while the contacts join the same
+  // pairs of blocks (k_pairs_, in contact order), so that the solver keeps
+  // its symbolic analysis (simulation3d_assembly.hpp).
+  std::unique_ptr<df::LinearSolver> solver_;
+  Eigen::SparseMatrix<double> k_lower_;
+  std::vector<std::pair<int, int>> k_pairs_;
+  df::StepTimings timings_;
 };
 
 }  // namespace dda::df3

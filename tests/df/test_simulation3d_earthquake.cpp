@@ -1,0 +1,165 @@
+// 3D earthquake input (df/ground_motion3.hpp) on validation case V3
+// (shared/validation/CASES.md): a 1 m cube on a plane 20/090 with phi = 30,
+// under the resultant acceleration r(t) = g [0.5 sin 10t, 0, -1] for
+// t in [0, 2 pi] (ten cycles), and the same with a second horizontal
+// component. Expected numbers: the analytical 3D solution of the seed report
+// (`dda sliding3d`, tools/analysis/sliding3d.hpp) run here with dt = 1e-4;
+// CASES.md gives its final displacement for the first case, D = (1.165, 0,
+// -0.424) m, |D| = 1.239 m, checked too. The seed reports its 3D-DDA within
+// 3 % (one component) and 8 % (two) of the analytical result; the issue
+// asks for 2 %.
+//
+// Loading mode: the free cube feels b(t) = -a_g(t) = r(t) - gravity.
+// Displacement mode: the base (the fixed block) moves with the ground
+// displacement d_g(t), a_g integrated twice; compared is the cube's motion
+// relative to the base. dt = 1 ms; the penalty is discussed at kPenalty.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "dda/analysis/sliding3d.hpp"
+#include "dda/df/simulation3d.hpp"
+#include "df3_test_models.hpp"
+
+namespace dda::df3 {
+namespace {
+
+constexpr double kG = 9.81;
+constexpr double kPi = std::numbers::pi;
+// N/m per contact point, normal and shear. The error against the rigid
+// block comes from the contact springs: every stop leaves the cube ringing
+// on them (undamped), which starts the next slide early. Measured at dt =
+// 1 ms: 2.2 % at 1e9, 1.15 % at 1e10, 0.48 % at 1e11 (dt = 0.5 ms at 1e9:
+// 1.4 %). 1e11 is 4e3 x the cube's weight per metre.
+constexpr double kPenalty = 1e11;
+
+// b(t) / g of the two cases.
+Vec3 body_one(double t) { return Vec3(0.5 * std::sin(10 * t), 0, 0); }
+Vec3 body_two(double t) { return Vec3(0.5 * std::sin(10 * t), 0.3 * std::cos(7 * t), 0); }
+
+// The ground acceleration a_g = -b sampled every 1 ms over [0, t_end].
+std::shared_ptr<const GroundMotion3> ground(Vec3 (*body)(double), double t_end) {
+  std::vector<double> t;
+  std::vector<Vec3> a;
+  const int n = static_cast<int>(std::ceil(t_end / 1e-3)) + 1;
+  for (int k = 0; k <= n; ++k) {
+    t.push_back(k * 1e-3);
+    a.push_back(-kG * body(k * 1e-3));
+  }
+  return std::make_shared<GroundMotion3>(t, a);
+}
+
+// Displacements at t = 0.1 s, 0.2 s, ... and at t_end.
+using Trajectory = std::vector<Vec3>;
+constexpr double kSample = 0.1;
+
+Trajectory analytical(Vec3 (*body)(double), double t_end) {
+  analysis::SlidingModel m;
+  m.planes = {analysis::Plane{20, 90}};
+  m.friction = {analysis::FrictionLaw::constant_angle(30)};
+  m.input.body = [body](double t) { return Vec3(kG * body(t)); };
+  m.input.duration = t_end;
+  m.gravity = kG;
+  const auto run = analysis::run_sliding(m, 1e-4, t_end, static_cast<int>(std::lround(kSample / 1e-4)));
+  Trajectory out;
+  for (std::size_t k = 1; k < run.samples.size(); ++k) out.push_back(run.samples[k].u);
+  return out;
+}
+
+Trajectory dda(Vec3 (*body)(double), double t_end, const std::string& mode, double penalty = kPenalty) {
+  const Eigen::Matrix3d r = testing::plane_rotation(20, 90);
+  Model3 m;
+  m.blocks = {testing::box({-5, -5, -1}, {5, 5, 0}, r), testing::box({-0.5, -0.5, 0}, {0.5, 0.5, 1}, r)};
+  m.fixed = {true, false};
+  m.material = {2600, 1e10, 0.25};
+  m.default_joint.friction_deg = 30;
+  m.normal_penalty = m.shear_penalty = penalty;
+  m.gravity = {0, 0, -kG};
+  m.earthquake = {ground(body, t_end), make_ground_input_mode3(mode)};
+  Simulation3 sim(m);
+  const Vec3 c0 = sim.blocks()[1].centroid, b0 = sim.blocks()[0].centroid;
+  const double dt = 1e-3;
+  int unconverged = 0;
+  Trajectory out;
+  const int steps = static_cast<int>(std::lround(t_end / dt)), every = static_cast<int>(std::lround(kSample / dt));
+  for (int s = 1; s <= steps; ++s) {
+    if (!sim.step(dt).converged) ++unconverged;
+    if (s % every == 0 || s == steps) out.push_back((sim.blocks()[1].centroid - c0) - (sim.blocks()[0].centroid - b0));
+  }
+  EXPECT_EQ(unconverged, 0);
+  return out;
+}
+
+// The final displacements differ by at most 2 % of the final |D|, and so do
+// the displacements at every 0.1 s on the way.
+void compare(const char* what, const Trajectory& got, const Trajectory& expected) {
+  ASSERT_EQ(got.size(), expected.size());
+  const Vec3 &g = got.back(), &e = expected.back();
+  double worst = 0, worst_t = 0;
+  for (std::size_t k = 0; k < got.size(); ++k)
+    if ((got[k] - expected[k]).norm() > worst) worst = (got[k] - expected[k]).norm(), worst_t = kSample * (k + 1);
+  std::printf("%s: DDA (%.4f, %.4f, %.4f) m, analytical (%.4f, %.4f, %.4f) m, difference %.2f %% of |D|; "
+              "largest on the way %.2f %% at t = %.1f s\n",
+              what, g.x(), g.y(), g.z(), e.x(), e.y(), e.z(), 100 * (g - e).norm() / e.norm(), 100 * worst / e.norm(),
+              worst_t);
+  EXPECT_LT((g - e).norm(), 0.02 * e.norm());
+  EXPECT_LT(worst, 0.02 * e.norm());
+}
+
+TEST(GroundMotion3, IntegratesAPiecewiseLinearRecordExactly) {
+  // a = (1, -2, 0.5) t on [0, 2]: v = a' t^2 / 2, d = a' t^3 / 6; then a = 0.
+  const Vec3 slope(1, -2, 0.5);
+  std::vector<double> t{0, 0.5, 1.25, 2};
+  std::vector<Vec3> a;
+  for (double x : t) a.push_back(slope * x);
+  const GroundMotion3 g(t, a);
+  for (double x : {0.3, 1.0, 1.9, 2.0}) {
+    EXPECT_LT((g.velocity(x) - slope * x * x / 2).norm(), 1e-12);
+    EXPECT_LT((g.displacement(x) - slope * x * x * x / 6).norm(), 1e-12);
+  }
+  // After the record the ground drifts on at its last velocity.
+  EXPECT_LT((g.displacement(3) - (slope * 8.0 / 6 + slope * 2.0)).norm(), 1e-12);
+  // The mean over a step is the exact impulse per unit time.
+  EXPECT_LT((g.mean_acceleration(0.2, 0.6) - slope * 0.4).norm(), 1e-12);
+  EXPECT_THROW(GroundMotion3({0, 0}, {Vec3::Zero(), Vec3::Zero()}), InputError);
+  EXPECT_THROW(make_ground_input_mode3("velocity"), InputError);
+}
+
+TEST(Simulation3Earthquake, OneHorizontalComponentLoadingModeV3) {
+  const double t_end = 2 * kPi;
+  const Trajectory expected = analytical(body_one, t_end);
+  // The analytical solver against CASES.md: D = (1.165, 0, -0.424) m.
+  EXPECT_NEAR(expected.back().x(), 1.165, 0.005);
+  EXPECT_NEAR(expected.back().z(), -0.424, 0.005);
+  const Trajectory got = dda(body_one, t_end, "loading");
+  compare("V3-3D loading", got, expected);
+  // Convergence with the penalty: ten times softer, about twice the error.
+  const Vec3 soft = dda(body_one, t_end, "loading", kPenalty / 10).back();
+  const Vec3 stiff = got.back();
+  std::printf("V3-3D loading, error at penalty 1e10: %.2f %%, 1e11: %.2f %%\n",
+              100 * (soft - expected.back()).norm() / expected.back().norm(),
+              100 * (stiff - expected.back()).norm() / expected.back().norm());
+  EXPECT_LT((stiff - expected.back()).norm(), 0.6 * (soft - expected.back()).norm());
+}
+
+TEST(Simulation3Earthquake, OneHorizontalComponentDisplacementModeV3) {
+  const double t_end = 2 * kPi;
+  compare("V3-3D displacement", dda(body_one, t_end, "displacement"), analytical(body_one, t_end));
+}
+
+TEST(Simulation3Earthquake, TwoHorizontalComponentsV3) {
+  const double t_end = 2 * kPi;
+  const Trajectory expected = analytical(body_two, t_end);
+  // The second component moves the block across the dip (back and forth:
+  // at t_end it happens to be back near y = 0).
+  double most = 0;
+  for (const Vec3& u : expected) most = std::max(most, std::abs(u.y()));
+  EXPECT_GT(most, 0.05);
+  compare("V3-3D two components, loading", dda(body_two, t_end, "loading"), expected);
+  compare("V3-3D two components, displacement", dda(body_two, t_end, "displacement"), expected);
+}
+
+}  // namespace
+}  // namespace dda::df3
