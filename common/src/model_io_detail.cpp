@@ -41,8 +41,8 @@ void check_finite(const h5::Reader& r, const std::string& ds, const std::vector<
 
 // ------------------------------------------------------------------ writing
 
-void write_root_attributes(h5::Writer& w, const char* format, const char* units, const Provenance& p) {
-  const hid_t root = w.file();
+void write_root_attributes(h5::Writer& w, const char* format, const char* units, const Provenance& p, hid_t root) {
+  if (root < 0) root = w.file();
   w.attr_text(root, "format", format);
   w.attr_i32(root, "format_version", kFormatVersion);
   w.attr_text(root, "units", units);
@@ -61,14 +61,14 @@ std::vector<double> flatten(const std::vector<Vec3>& v) {
   return xyz;
 }
 
-void write_domain(h5::Writer& w, const Box3& box) {
-  h5::Id g = w.group("domain");
+void write_domain(h5::Writer& w, const Box3& box, const std::string& at) {
+  h5::Id g = w.group(at + "domain");
   w.f64(g.get(), "box", flatten({box.lo, box.hi}), {2, 3}, "m",
         "domain box: row 0 the lower corner x, y, z, row 1 the upper corner");
 }
 
-void write_sets(h5::Writer& w, const std::vector<JointSetInfo>& sets) {
-  h5::Id g = w.group("sets");
+void write_sets(h5::Writer& w, const std::vector<JointSetInfo>& sets, const std::string& at) {
+  h5::Id g = w.group(at + "sets");
   std::vector<std::string> names, origins;
   for (const JointSetInfo& s : sets) {
     names.push_back(s.name);
@@ -79,8 +79,8 @@ void write_sets(h5::Writer& w, const std::vector<JointSetInfo>& sets) {
             "how set i was made: statistical, layered, user, csv, geo or bedding");
 }
 
-void write_points(h5::Writer& w, const std::vector<ModelPoint3>& points) {
-  h5::Id g = w.group("points");
+void write_points(h5::Writer& w, const std::vector<ModelPoint3>& points, const std::string& at) {
+  h5::Id g = w.group(at + "points");
   std::vector<std::string> names;
   std::vector<std::int32_t> kinds;
   std::vector<Vec3> xyz;
@@ -95,8 +95,8 @@ void write_points(h5::Writer& w, const std::vector<ModelPoint3>& points) {
 }
 
 h5::Id write_layer_table(h5::Writer& w, const std::vector<Layer>& layers, const std::string& coordinate,
-                         const std::string& generated) {
-  h5::Id g = w.group("layers");
+                         const std::string& generated, const std::string& at) {
+  h5::Id g = w.group(at + "layers");
   std::vector<double> bottom, top, target, realised;
   for (const Layer& l : layers) {
     bottom.push_back(l.bottom);
@@ -114,8 +114,8 @@ h5::Id write_layer_table(h5::Writer& w, const std::vector<Layer>& layers, const 
   return g;
 }
 
-void write_layers(h5::Writer& w, const std::vector<Layer>& layers, const Vec3& bed_normal) {
-  h5::Id g = write_layer_table(w, layers, ", as the coordinate along the bed normal (normal . x)", "fractures");
+void write_layers(h5::Writer& w, const std::vector<Layer>& layers, const Vec3& bed_normal, const std::string& at) {
+  h5::Id g = write_layer_table(w, layers, ", as the coordinate along the bed normal (normal . x)", "fractures", at);
   w.f64(g.get(), "normal", flatten({bed_normal}), {3}, "1",
         "normal of the beds x, y, z (written even when there are no beds)");
 }
@@ -135,9 +135,9 @@ void check_format(const h5::Reader& r, const std::string& expected) {
            std::to_string(kFormatVersion) + " (a newer dda wrote it?)");
 }
 
-Provenance read_provenance(const h5::Reader& r) {
+Provenance read_provenance(const h5::Reader& r, hid_t f) {
   Provenance p;
-  const hid_t f = r.file();
+  if (f < 0) f = r.file();
   p.program_version = r.attr_text(f, "program_version", "the file").value_or("");
   p.scenario_path = r.attr_text(f, "scenario_path", "the file").value_or("");
   p.scenario_text = r.attr_text(f, "scenario", "the file").value_or("");
@@ -254,58 +254,61 @@ std::vector<std::int64_t> read_offsets(const h5::Reader& r, const std::string& d
   return std::move(off.data);
 }
 
-Box3 read_domain(const h5::Reader& r) {
+Box3 read_domain(const h5::Reader& r, const std::string& at) {
   Box3 box;
-  if (!r.exists("/domain")) return box;
-  const std::vector<double> v = read_fixed(r, "/domain/box", {2, 3});
+  if (!r.exists("/" + at + "domain")) return box;
+  const std::vector<double> v = read_fixed(r, "/" + at + "domain/box", {2, 3});
   box.lo = row3(v, 0);
   box.hi = row3(v, 1);
   // A zero box (nothing set) is allowed; an inside-out one is not.
   if ((box.hi.array() < box.lo.array()).any())
-    r.fail("dataset /domain/box has an upper corner below its lower corner");
+    r.fail("dataset /" + at + "domain/box has an upper corner below its lower corner");
   return box;
 }
 
-std::vector<JointSetInfo> read_sets(const h5::Reader& r) {
+std::vector<JointSetInfo> read_sets(const h5::Reader& r, const std::string& at) {
   std::vector<JointSetInfo> sets;
-  if (!r.exists("/sets")) return sets;
-  std::vector<std::string> names = r.strings("/sets/name");
-  std::vector<std::string> origins = read_strings(r, "/sets/origin", names.size(), "set");
+  const std::string g = "/" + at + "sets";
+  if (!r.exists(g)) return sets;
+  std::vector<std::string> names = r.strings(g + "/name");
+  std::vector<std::string> origins = read_strings(r, g + "/origin", names.size(), "set");
   for (std::size_t i = 0; i < names.size(); ++i) sets.push_back({names[i], origins[i]});
   return sets;
 }
 
-std::vector<ModelPoint3> read_points(const h5::Reader& r) {
+std::vector<ModelPoint3> read_points(const h5::Reader& r, const std::string& at) {
   std::vector<ModelPoint3> points;
-  if (!r.exists("/points")) return points;
-  std::vector<std::string> names = r.strings("/points/name");
+  const std::string g = "/" + at + "points";
+  if (!r.exists(g)) return points;
+  std::vector<std::string> names = r.strings(g + "/name");
   const std::size_t n = names.size();
-  std::vector<int> kinds = read_ints(r, "/points/kind", n, "point", 0, 3);
-  std::vector<double> xyz = read_rows(r, "/points/xyz", n, 3, "point");
+  std::vector<int> kinds = read_ints(r, g + "/kind", n, "point", 0, 3);
+  std::vector<double> xyz = read_rows(r, g + "/xyz", n, 3, "point");
   for (std::size_t i = 0; i < n; ++i)
     points.push_back({names[i], static_cast<PointKind>(kinds[i]), row3(xyz, i)});
   return points;
 }
 
-std::vector<Layer> read_layers(const h5::Reader& r, Vec3& bed_normal) {
+std::vector<Layer> read_layers(const h5::Reader& r, Vec3& bed_normal, const std::string& at) {
+  const std::string g = "/" + at + "layers";
   std::vector<Layer> layers;
   bed_normal = Vec3(0, 0, 1);
-  if (!r.exists("/layers")) return layers;
-  h5::Array<double> bottom = r.f64("/layers/bottom");
+  if (!r.exists(g)) return layers;
+  h5::Array<double> bottom = r.f64(g + "/bottom");
   if (bottom.dims.size() != 1)
-    r.fail("dataset /layers/bottom has shape " + shape_text(bottom.dims) + ", expected (N,)");
-  check_finite(r, "/layers/bottom", bottom.data);
+    r.fail("dataset " + g + "/bottom has shape " + shape_text(bottom.dims) + ", expected (N,)");
+  check_finite(r, g + "/bottom", bottom.data);
   const std::size_t n = bottom.data.size();
-  std::vector<double> top = read_vector(r, "/layers/top", n, "layer");
-  std::vector<double> target = read_vector(r, "/layers/target_fsi", n, "layer");
-  std::vector<double> realised = read_vector(r, "/layers/realised_fsi", n, "layer");
+  std::vector<double> top = read_vector(r, g + "/top", n, "layer");
+  std::vector<double> target = read_vector(r, g + "/target_fsi", n, "layer");
+  std::vector<double> realised = read_vector(r, g + "/realised_fsi", n, "layer");
   for (std::size_t i = 0; i < n; ++i) {
     if (top[i] < bottom.data[i])
       r.fail("layer " + std::to_string(i) + " has top " + std::to_string(top[i]) +
-             " below its bottom " + std::to_string(bottom.data[i]) + " (/layers)");
+             " below its bottom " + std::to_string(bottom.data[i]) + " (" + g + ")");
     layers.push_back({bottom.data[i], top[i], target[i], realised[i]});
   }
-  bed_normal = row3(read_fixed(r, "/layers/normal", {3}), 0);
+  bed_normal = row3(read_fixed(r, g + "/normal", {3}), 0);
   return layers;
 }
 

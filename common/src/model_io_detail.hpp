@@ -23,18 +23,23 @@ constexpr const char* kSetCodes =
 
 // format, format_version, units and the provenance (program version and
 // creation time filled in when empty).
-void write_root_attributes(h5::Writer& w, const char* format, const char* units, const Provenance& p);
+// `root`: the object that carries them, the file by default (a group that
+// embeds a model in another file, e.g. /model of a 3D results file).
+void write_root_attributes(h5::Writer& w, const char* format, const char* units, const Provenance& p,
+                           hid_t root = -1);
 // Rows of x y z, for an (n, 3) dataset.
 std::vector<double> flatten(const std::vector<Vec3>& v);
-void write_domain(h5::Writer& w, const Box3& box);
-void write_sets(h5::Writer& w, const std::vector<JointSetInfo>& sets);
-void write_points(h5::Writer& w, const std::vector<ModelPoint3>& points);
+// `at`: the group prefix the groups are made under ("" the root, "model/").
+void write_domain(h5::Writer& w, const Box3& box, const std::string& at = "");
+void write_sets(h5::Writer& w, const std::vector<JointSetInfo>& sets, const std::string& at = "");
+void write_points(h5::Writer& w, const std::vector<ModelPoint3>& points, const std::string& at = "");
 // The /layers group with bottom, top, target_fsi and realised_fsi, whose
 // descriptions name the bed coordinate and what was generated; returned so a
 // file can add its own datasets.
 h5::Id write_layer_table(h5::Writer& w, const std::vector<Layer>& layers, const std::string& coordinate,
-                         const std::string& generated);
-void write_layers(h5::Writer& w, const std::vector<Layer>& layers, const Vec3& bed_normal);
+                         const std::string& generated, const std::string& at = "");
+void write_layers(h5::Writer& w, const std::vector<Layer>& layers, const Vec3& bed_normal,
+                  const std::string& at = "");
 
 // ------------------------------------------------------------------ reading
 
@@ -45,7 +50,7 @@ void check_finite(const h5::Reader& r, const std::string& ds, const std::vector<
 
 // `format` is `expected` and `format_version` one this code reads.
 void check_format(const h5::Reader& r, const std::string& expected);
-Provenance read_provenance(const h5::Reader& r);
+Provenance read_provenance(const h5::Reader& r, hid_t from = -1);  // the file's root by default
 // A finite float64 root attribute, 0 if absent.
 double root_number(const h5::Reader& r, const char* name);
 
@@ -76,11 +81,12 @@ std::vector<std::int64_t> read_offsets(const h5::Reader& r, const std::string& d
 std::vector<double> read_fixed(const h5::Reader& r, const std::string& ds,
                                const std::vector<hsize_t>& dims);
 
-Box3 read_domain(const h5::Reader& r);
-std::vector<JointSetInfo> read_sets(const h5::Reader& r);
-std::vector<ModelPoint3> read_points(const h5::Reader& r);
+// `at` as for the writers: "" the root, "model/" a group below it.
+Box3 read_domain(const h5::Reader& r, const std::string& at = "");
+std::vector<JointSetInfo> read_sets(const h5::Reader& r, const std::string& at = "");
+std::vector<ModelPoint3> read_points(const h5::Reader& r, const std::string& at = "");
 // The beds and, through `bed_normal`, their normal ((0, 0, 1) if absent).
-std::vector<Layer> read_layers(const h5::Reader& r, Vec3& bed_normal);
+std::vector<Layer> read_layers(const h5::Reader& r, Vec3& bed_normal, const std::string& at = "");
 
 inline Vec3 row3(const std::vector<double>& v, std::size_t i) {
   return {v[3 * i], v[3 * i + 1], v[3 * i + 2]};

@@ -390,3 +390,17 @@ IntegratedRecord integrate_record(const AccelRecord& record, int baseline_degree
 }
 
 }  // namespace dda
+
+namespace dda {
+
+void process_record(AccelRecord& rec, const RecordProcessing& p) {
+  for (std::size_t c = 0; c < 3; ++c)
+    if (!p.use[c]) std::fill(rec.a[c].begin(), rec.a[c].end(), 0.0);
+  scale_record(rec, p.scale);
+  if (p.resample > 0) rec = resample_record(rec, p.resample);
+  if (p.filter) filter_record(rec, *p.filter);
+  ramp_record(rec, p.ramp);
+  if (p.baseline >= 2) rec.a = integrate_record(rec, p.baseline).a;
+}
+
+}  // namespace dda

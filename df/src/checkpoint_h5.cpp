@@ -7,16 +7,13 @@
 #include <string>
 
 #include "dda/df/block_kinematics.hpp"
+#include "results_h5_util.hpp"
 
 namespace dda::df {
 namespace {
 
-std::vector<double> flat(const std::vector<Vec2>& v) {
-  std::vector<double> out;
-  out.reserve(2 * v.size());
-  for (const Vec2& p : v) out.insert(out.end(), {p.x(), p.y()});
-  return out;
-}
+using h5io::flat;
+using h5io::rows_of;
 
 template <class Get>
 std::vector<std::int32_t> ints(const std::vector<Contact>& cs, Get get) {
@@ -41,11 +38,6 @@ std::vector<Vec2> points(const h5::Reader& r, const std::string& name, std::size
   std::vector<Vec2> out(n);
   for (std::size_t i = 0; i < n; ++i) out[i] = Vec2(a.data[2 * i], a.data[2 * i + 1]);
   return out;
-}
-
-std::size_t rows_of(const h5::Reader& r, const std::string& name) {
-  const h5::Array<double> a = r.f64(name);
-  return a.dims.empty() ? 0 : a.dims[0];
 }
 
 }  // namespace

@@ -20,15 +20,9 @@ GroundMotion load_ground_motion(const GroundMotionSpec& spec) {
     if (v != 0.0)
       throw InputError(rec.source + ": has a fourth column (az), which the 2D model cannot use; give t, ax, ay "
                                     "with ay vertical.");
-  if (!spec.use_x) std::fill(rec.a[0].begin(), rec.a[0].end(), 0.0);
-  if (!spec.use_y) std::fill(rec.a[1].begin(), rec.a[1].end(), 0.0);
-  scale_record(rec, spec.scale);
-  if (spec.resample > 0) rec = resample_record(rec, spec.resample);
-  if (spec.filter) filter_record(rec, *spec.filter);
-  ramp_record(rec, spec.ramp);
-  // The corrected acceleration is the ground motion of both modes (see the
-  // header): integrate_record removes P'' from it along with P from d.
-  if (spec.baseline >= 2) rec.a = integrate_record(rec, spec.baseline).a;
+  // The corrected acceleration is the ground motion of every mode (see the
+  // header): the baseline correction removes P'' from it along with P from d.
+  process_record(rec, spec.processing);
 
   GroundMotion g;
   g.source = rec.source;

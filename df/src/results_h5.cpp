@@ -2,9 +2,9 @@
 // docs/formats.md; keep the two in step.
 #include <cmath>
 #include <cstdint>
-#include <ctime>
 
 #include "checkpoint_h5.hpp"
+#include "results_h5_util.hpp"
 #include "dda/common/atomic_file.hpp"
 #include "dda/common/error.hpp"
 #include "dda/df/results.hpp"
@@ -13,30 +13,18 @@ namespace dda::df {
 namespace {
 
 constexpr const char* kFormat = "dda-results";
-constexpr int kFormatVersion = 1;
 constexpr const char* kUnits =
     "SI: lengths m, time s, velocity m/s, rotation rad, stress Pa, force N and energy J per unit thickness";
 
-std::vector<double> flat(const std::vector<Vec2>& v) {
-  std::vector<double> out;
-  out.reserve(2 * v.size());
-  for (const Vec2& p : v) out.insert(out.end(), {p.x(), p.y()});
-  return out;
-}
-
-h5::Id subgroup(h5::Writer& w, hid_t parent, const std::string& name) {
-  h5::Id g(H5Gcreate2(parent, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
-  if (!g.valid()) throw InputError("cannot create HDF5 group " + name + ".");
-  (void)w;
-  return g;
-}
+using h5io::flat;
+using h5io::length;
 
 void write_model(h5::Writer& w, const Results& r, const Model& model) {
   h5::Id g = w.group("model");
   w.attr_text(g.get(), "description", "the blocks, joint sets and points the run started from");
   const BlockModel& bm = r.blocks;
   {
-    h5::Id b = subgroup(w, g.get(), "blocks");
+    h5::Id b = h5io::subgroup(g.get(), "blocks");
     std::vector<Vec2> verts;
     std::vector<std::int64_t> offsets{0};
     std::vector<std::int32_t> edge_set, layer, material;
@@ -56,14 +44,14 @@ void write_model(h5::Writer& w, const Results& r, const Model& model) {
     w.i32(b.get(), "material", material, "", "material index of the block (see /model/materials)");
   }
   {
-    h5::Id s = subgroup(w, g.get(), "sets");
+    h5::Id s = h5io::subgroup(g.get(), "sets");
     std::vector<std::string> names, origins;
     for (const JointSetInfo& js : bm.sets) names.push_back(js.name), origins.push_back(js.origin);
     w.strings(s.get(), "name", names, "", "joint set names (index = set id)");
     w.strings(s.get(), "origin", origins, "", "where each set came from");
   }
   {
-    h5::Id p = subgroup(w, g.get(), "points");
+    h5::Id p = h5io::subgroup(g.get(), "points");
     std::vector<std::string> names;
     std::vector<std::int32_t> kinds, blocks;
     std::vector<Vec2> xy;
@@ -79,14 +67,14 @@ void write_model(h5::Writer& w, const Results& r, const Model& model) {
     w.i32(p.get(), "block", blocks, "", "block containing the point");
   }
   {
-    h5::Id l = subgroup(w, g.get(), "layers");
+    h5::Id l = h5io::subgroup(g.get(), "layers");
     std::vector<double> bottom, top;
     for (const Layer& layer : bm.layers) bottom.push_back(layer.bottom), top.push_back(layer.top);
     w.f64(l.get(), "bottom", bottom, {bottom.size()}, "m", "lower boundary of each bed");
     w.f64(l.get(), "top", top, {top.size()}, "m", "upper boundary of each bed");
   }
   {
-    h5::Id m = subgroup(w, g.get(), "materials");
+    h5::Id m = h5io::subgroup(g.get(), "materials");
     std::vector<double> props;
     for (const Material& mat : model.materials)
       props.insert(props.end(), {mat.density, mat.young, mat.poisson, mat.plane == PlaneMode::Strain ? 1.0 : 0.0});
@@ -259,32 +247,12 @@ void write_frames(h5::Writer& w, const std::vector<Frame>& frames, std::size_t n
 
 // --------------------------------------------------------------- reading
 
-template <class T>
-void expect_shape(const h5::Reader& r, const std::string& name, const h5::Array<T>& a,
-                  const std::vector<hsize_t>& dims) {
-  if (a.dims != dims) {
-    std::string want = "(";
-    for (std::size_t i = 0; i < dims.size(); ++i) want += (i ? ", " : "") + std::to_string(dims[i]);
-    r.fail("dataset " + name + " has an unexpected shape, expected " + want + (dims.size() == 1 ? ",)" : ")"));
-  }
-}
-
 std::vector<double> f64(const h5::Reader& r, const std::string& name, const std::vector<hsize_t>& dims) {
-  h5::Array<double> a = r.f64(name);
-  expect_shape(r, name, a, dims);
-  return std::move(a.data);
+  return h5io::read_f64(r, name, dims);
 }
 
 std::vector<std::int64_t> i64(const h5::Reader& r, const std::string& name, std::size_t n) {
-  h5::Array<std::int64_t> a = r.i64(name);
-  expect_shape(r, name, a, {n});
-  return std::move(a.data);
-}
-
-std::size_t length(const h5::Reader& r, const std::string& name) {
-  const h5::Array<double> a = r.f64(name);
-  if (a.dims.empty()) r.fail("dataset " + name + " must be an array");
-  return a.dims[0];
+  return h5io::read_i64(r, name, n);
 }
 
 void read_model(const h5::Reader& r, Results& out) {
@@ -479,24 +447,9 @@ Frame make_frame(const Simulation& sim) {
 void write_results_h5(const std::string& path, const Results& results, const Simulation& sim, bool complete) {
   AtomicOutput out(path);
   h5::Writer w(path, out.temp_path());
-  const hid_t root = w.file();
-  const Provenance& p = results.source.provenance;
-  w.attr_text(root, "format", kFormat);
-  w.attr_i32(root, "format_version", kFormatVersion);
-  w.attr_text(root, "units", kUnits);
-  w.attr_text(root, "program_version", p.program_version.empty() ? std::string(version_string()) : p.program_version);
-  w.attr_text(root, "scenario_path", p.scenario_path);
-  w.attr_text(root, "scenario", p.scenario_text);
-  w.attr_u64(root, "seed", p.seed);
-  w.attr_text(root, "created_utc", utc_now());
-  w.attr_text(root, "input_kind", results.source.input_kind);
-  w.attr_text(root, "blocks_path", results.source.blocks_path);
-  w.attr_text(root, "solver", results.solver);
-  w.attr_f64(root, "output_interval", results.output.interval);
-  w.attr_i32(root, "output_every", results.output.every);
-  w.attr_i32(root, "complete", complete ? 1 : 0);
-  w.attr_f64(root, "time", sim.time());
-  w.attr_i32(root, "steps", static_cast<std::int32_t>(sim.log().size()));
+  h5io::write_root(w, kFormat, kUnits, results.source, results.output, complete, sim.time(),
+                   static_cast<int>(sim.log().size()));
+  w.attr_text(w.file(), "solver", results.solver);
 
   write_model(w, results, sim.model());
   write_series(w, sim);
@@ -513,27 +466,12 @@ void write_results_h5(const std::string& path, const Results& results, const Sim
 
 Results read_results_h5(const std::string& path, bool with_state) {
   h5::Reader r(path);
-  const hid_t root = r.file();
-  const auto format = r.attr_text(root, "format", "the file");
-  if (!format) r.fail("has no format attribute, so it was not written by dda (expected a dda-results file)");
-  if (*format != kFormat) r.fail("is a " + *format + " file, expected a dda-results file");
-  const auto version = r.attr_int(root, "format_version", "the file");
-  if (!version || *version > kFormatVersion)
-    r.fail("has results format version " + (version ? std::to_string(*version) : std::string("(none)")) +
-           "; this dda reads version " + std::to_string(kFormatVersion));
+  const h5io::RootInfo root = h5io::read_root(r, kFormat);
   Results out;
-  Provenance& p = out.source.provenance;
-  p.program_version = r.attr_text(root, "program_version", "the file").value_or("");
-  p.scenario_path = r.attr_text(root, "scenario_path", "the file").value_or("");
-  p.scenario_text = r.attr_text(root, "scenario", "the file").value_or("");
-  p.seed = r.attr_u64(root, "seed", "the file").value_or(0);
-  p.created_utc = r.attr_text(root, "created_utc", "the file").value_or("");
-  out.source.input_kind = r.attr_text(root, "input_kind", "the file").value_or("scenario");
-  out.source.blocks_path = r.attr_text(root, "blocks_path", "the file").value_or("");
-  out.solver = r.attr_text(root, "solver", "the file").value_or("auto");
-  out.output.interval = r.attr_f64(root, "output_interval", "the file").value_or(0);
-  out.output.every = static_cast<int>(r.attr_int(root, "output_every", "the file").value_or(0));
-  out.complete = r.attr_int(root, "complete", "the file").value_or(0) != 0;
+  out.source = root.source;
+  out.output = root.output;
+  out.complete = root.complete;
+  out.solver = r.attr_text(r.file(), "solver", "the file").value_or("auto");
 
   read_series(r, out);
   read_log(r, out);

@@ -1,8 +1,6 @@
 // The forward-run sections of the scenario (materials, joints, loading,
 // fixed, control) into a ModelInput. Keys, units and defaults are documented
 // in docs/scenario.md; keep the two in step.
-#include <yaml-cpp/yaml.h>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -10,15 +8,16 @@
 #include <set>
 
 #include "dda/common/error.hpp"
-#include "dda/df/friction.hpp"
 #include "dda/df/scenario.hpp"
 #include "scenario_earthquake.hpp"
+#include "scenario_control.hpp"
+#include "scenario_joints.hpp"
+#include "scenario_points.hpp"
 
 namespace dda::df {
 namespace {
 
 const Range kPoisson{-1, 0.5, true, true};
-const Range kUnitOpen{0, 1, true, true};
 
 // A material with the per-block initial values it gives.
 struct MaterialEntry {
@@ -77,87 +76,6 @@ Zone read_zone(const YamlNode& z) {
   return out;
 }
 
-// friction_law as a mapping: the law's name and its own numbers and words
-// (FrictionLawSpec); ranges are checked here, the rest by the law itself.
-void read_friction_law(const YamlNode& f, JointProperties& j) {
-  const std::string name = f.text("name");
-  const FrictionLawEntry* law = find_friction_law(name);
-  if (!law) {
-    std::string known;
-    for (const FrictionLawEntry& e : friction_laws()) known += (known.empty() ? "" : ", ") + e.name;
-    f.fail_key("name", "must be a known friction law (" + known + "), got '" + name + "'");
-  }
-  const FrictionLawSpec spec = law->spec();
-  std::vector<std::string> keys{"name"};
-  for (const FrictionParameter& p : spec.numbers) keys.push_back(p.key);
-  for (const FrictionOption& w : spec.words) keys.push_back(w.key);
-  f.allow(keys);
-  j.friction_law = name;
-  j.friction_parameters.clear();
-  j.friction_options.clear();
-  for (const FrictionParameter& p : spec.numbers)
-    if (f.has(p.key)) j.friction_parameters[p.key] = f.number(p.key, p.range);
-  for (const FrictionOption& w : spec.words)
-    if (f.has(w.key)) j.friction_options[w.key] = f.text(w.key);
-}
-
-JointProperties read_joint(const YamlNode& n, const JointProperties& base) {
-  JointProperties j = base;
-  j.friction_deg = n.number("friction_deg", base.friction_deg, Range::half_open(0, 90));
-  j.cohesion = n.number("cohesion", base.cohesion, Range::non_negative());
-  j.tensile_strength = n.number("tensile_strength", base.tensile_strength, Range::non_negative());
-  if (n.has("normal_penalty")) j.normal_penalty = n.number("normal_penalty", Range::positive());
-  if (n.has("shear_penalty")) j.shear_penalty = n.number("shear_penalty", Range::positive());
-  // friction_law: a name (keeping the parameters of the base, if any, when
-  // it names the base's law), or {name: ..., <parameter>: value, ...}.
-  std::optional<YamlNode> law_node;
-  if (n.has("friction_law")) {
-    const YamlNode f = n.child("friction_law");
-    if (f.is_map()) {
-      read_friction_law(f, j);
-      law_node = f;
-    } else {
-      j.friction_law = f.as_text();
-      if (j.friction_law != base.friction_law) j.friction_parameters.clear(), j.friction_options.clear();
-    }
-  }
-  try {
-    make_friction_law(j);
-  } catch (const FrictionParameterError& e) {
-    if (law_node) law_node->fail_key(e.key(), e.phrase());
-    n.fail_key("friction_law", std::string("is not usable: ") + e.what());
-  } catch (const InputError& e) {
-    n.fail_key("friction_law", std::string("is not usable: ") + e.what());
-  }
-  return j;
-}
-
-#define DDA_JOINT_KEYS "friction_deg", "cohesion", "tensile_strength", "normal_penalty", "shear_penalty", "friction_law"
-
-// Names of the keys of a top-level mapping section, in file order.
-std::vector<std::string> section_keys(const YamlNode& root, const std::string& section) {
-  std::vector<std::string> keys;
-  const YAML::Node doc = YAML::Load(root.source_text());
-  const YAML::Node s = doc[section];
-  if (!s || !s.IsMap()) return keys;
-  for (auto it = s.begin(); it != s.end(); ++it) keys.push_back(it->first.Scalar());
-  return keys;
-}
-
-std::string join(const std::vector<std::string>& v) {
-  std::string s;
-  for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + v[i];
-  return s.empty() ? "none" : s;
-}
-
-// The item of the scenario's `points` list with this name, if any.
-std::optional<YamlNode> scenario_point(const YamlNode& root, const std::string& name) {
-  if (!root.has("points")) return std::nullopt;
-  for (const YamlNode& p : root.list("points"))
-    if (p.is_map() && p.has("name") && p.child("name").is_scalar() && p.child("name").as_text() == name) return p;
-  return std::nullopt;
-}
-
 Vec2 vector2(const YamlNode& n, const std::string& key) {
   const Vec2 v = n.point(key);
   if (!std::isfinite(v.x()) || !std::isfinite(v.y())) n.fail_key(key, "must hold finite numbers");
@@ -185,9 +103,7 @@ TimeHistory read_table(const YamlNode& n, const std::string& key) {
 struct Parsed {
   std::vector<MaterialEntry> materials;
   std::vector<Zone> zones;             // zone k uses materials[k + 1]
-  JointProperties default_joint;
-  std::vector<std::pair<std::string, JointProperties>> joint_sets;  // by name, in file order
-  std::vector<std::pair<YamlNode, std::string>> joint_nodes;        // node of each named set
+  JointsSection joints;
   Vec2 gravity{0, -9.81};
   struct Load {
     YamlNode node;
@@ -244,28 +160,7 @@ Parsed parse(const YamlNode& root) {
     p.materials.push_back(base);
   }
 
-  // joints
-  if (auto j = root.optional_child("joints")) {
-    if (!j->is_map()) j->fail("must be a mapping of joint set names (and default) to joint properties");
-    if (auto d = j->optional_child("default")) {
-      d->allow({DDA_JOINT_KEYS});
-      p.default_joint = read_joint(*d, p.default_joint);
-    }
-    for (const std::string& name : section_keys(root, "joints")) {
-      if (name == "default") continue;
-      const YamlNode n = j->child(name);
-      bool given = false;
-      for (const char* k : {DDA_JOINT_KEYS}) given = given || n.has(k);
-      if (!given) {
-        if (n.is_map()) n.allow({DDA_JOINT_KEYS});
-        n.fail("gives no joint properties (give at least one of friction_deg, cohesion, tensile_strength, "
-               "normal_penalty, shear_penalty, friction_law)");
-      }
-      n.allow({DDA_JOINT_KEYS});
-      p.joint_sets.emplace_back(name, read_joint(n, p.default_joint));
-      p.joint_nodes.emplace_back(n, name);
-    }
-  }
+  p.joints = read_joints_section(root);
 
   // loading
   if (auto l = root.optional_child("loading")) {
@@ -340,29 +235,29 @@ Parsed parse(const YamlNode& root) {
 
   // control
   const YamlNode c = root.child("control");
-  c.allow({"dt", "total_time", "steps", "max_displacement_ratio", "w0", "dynamic", "max_open_close",
-           "penalty_factor", "shear_ratio", "fixed_penalty_factor", "min_dt_ratio", "solver", "output_interval",
-           "output_every", "initial_equilibrium"});
+  std::vector<std::string> keys{"w0", "dynamic", "max_open_close", "penalty_factor", "shear_ratio",
+                                "fixed_penalty_factor", "solver", "initial_equilibrium"};
+  keys.insert(keys.end(), std::begin(kRunLengthKeys), std::end(kRunLengthKeys));
+  c.allow(keys);
   Control& ctl = p.control;
-  ctl.dt = c.number("dt", Range::positive());
-  if (c.one_of({"total_time", "steps"}) == "total_time")
-    ctl.total_time = c.number("total_time", Range::positive());
-  else
-    ctl.steps = static_cast<int>(c.integer("steps", Range::closed(1, 1e9)));
-  ctl.max_displacement_ratio = c.number("max_displacement_ratio", ctl.max_displacement_ratio, kUnitOpen);
+  RunLength defaults;
+  defaults.max_displacement_ratio = ctl.max_displacement_ratio;
+  defaults.min_dt_ratio = ctl.min_dt_ratio;
+  const RunLength run = read_run_length(c, defaults);
+  ctl.dt = run.dt;
+  ctl.total_time = run.total_time;
+  ctl.steps = run.steps;
+  ctl.max_displacement_ratio = run.max_displacement_ratio;
+  ctl.min_dt_ratio = run.min_dt_ratio;
+  p.output = run.output;
   if (c.has("w0")) ctl.w0 = c.number("w0", Range::positive());
   ctl.dynamic = c.number("dynamic", ctl.dynamic, Range::closed(0, 1));
   ctl.max_open_close = static_cast<int>(c.integer("max_open_close", ctl.max_open_close, Range::closed(1, 1000)));
   ctl.penalty_factor = c.number("penalty_factor", ctl.penalty_factor, Range::positive());
   ctl.shear_ratio = c.number("shear_ratio", ctl.shear_ratio, Range::positive());
   ctl.fixed_penalty_factor = c.number("fixed_penalty_factor", ctl.fixed_penalty_factor, Range::positive());
-  ctl.min_dt_ratio = c.number("min_dt_ratio", ctl.min_dt_ratio, Range{0, 1, true, false});
   ctl.solver = c.choice("solver", {"auto", "cholmod", "pcg"}, "auto");
   ctl.initial_equilibrium = c.flag("initial_equilibrium", false);
-  if (c.has("output_interval") && c.has("output_every"))
-    c.fail_key("output_every", "cannot be given together with output_interval (give one)");
-  if (c.has("output_interval")) p.output.interval = c.number("output_interval", Range::positive());
-  if (c.has("output_every")) p.output.every = static_cast<int>(c.integer("output_every", Range::closed(1, 1e9)));
   return p;
 }
 
@@ -527,17 +422,8 @@ DfScenario read_df_scenario(const YamlNode& root, const BlockModel& blocks, cons
 
   // Joints: one entry per joint set of the blocks file, named ones from the
   // scenario, the rest (and boundary, excavation, artificial edges) default.
-  std::vector<std::string> set_names;
-  for (const JointSetInfo& s : blocks.sets) set_names.push_back(s.name);
-  in.default_joint = p.default_joint;
-  in.joint_sets.assign(blocks.sets.size(), p.default_joint);
-  for (std::size_t k = 0; k < p.joint_sets.size(); ++k) {
-    const auto it = std::find(set_names.begin(), set_names.end(), p.joint_sets[k].first);
-    if (it == set_names.end())
-      p.joint_nodes[k].first.fail("names a joint set that " + blocks_path + " does not have (its sets are " +
-                                  join(set_names) + ")");
-    in.joint_sets[static_cast<std::size_t>(it - set_names.begin())] = p.joint_sets[k].second;
-  }
+  in.default_joint = p.joints.default_joint;
+  in.joint_sets = joints_by_set(p.joints, blocks.sets, blocks_path);
 
   // Points: every fixed and measurement point of the blocks file; load
   // points take their force from loading.point_loads.
@@ -551,7 +437,7 @@ DfScenario read_df_scenario(const YamlNode& root, const BlockModel& blocks, cons
     if (!load_points.count(l.point))
       l.node.fail_key("point", "names '" + l.point + "', which is not a load point of " + blocks_path +
                                    " (its load points are " +
-                                   join(std::vector<std::string>(load_points.begin(), load_points.end())) + ")");
+                                   join_names(std::vector<std::string>(load_points.begin(), load_points.end())) + ")");
     if (forces.count(l.point)) l.node.fail_key("point", "gives a second load for point '" + l.point + "'");
     forces[l.point] = l.force;
   }
@@ -570,7 +456,7 @@ DfScenario read_df_scenario(const YamlNode& root, const BlockModel& blocks, cons
     if (!fixed_points.count(f.point))
       f.node.fail_key("point", "names '" + f.point + "', which is not a fixed point of " + blocks_path +
                                    " (its fixed points are " +
-                                   join(std::vector<std::string>(fixed_points.begin(), fixed_points.end())) + ")");
+                                   join_names(std::vector<std::string>(fixed_points.begin(), fixed_points.end())) + ")");
     if (!seen.insert(f.point).second) f.node.fail_key("point", "names fixed point '" + f.point + "' a second time");
     for (FixedPoint& fp : in.fixed_points)
       if (fp.name == f.point) fp.penalty = f.penalty, fp.history = f.displacement;
@@ -604,15 +490,6 @@ DfScenario read_df_scenario(const YamlNode& root, const BlockModel& blocks, cons
     throw InputError(root.file() + ": " + e.what());
   }
   return out;
-}
-
-OutputSchedule resolve_output_schedule(OutputSchedule s, const Control& control) {
-  if (s.interval > 0 || s.every > 0) return s;
-  if (control.total_time > 0)
-    s.interval = control.total_time / 20;
-  else
-    s.every = std::max(1, control.steps / 20);
-  return s;
 }
 
 }  // namespace dda::df

@@ -3,96 +3,24 @@
 #include "scenario_earthquake.hpp"
 
 #include <algorithm>
-#include <cmath>
-#include <filesystem>
 #include <set>
 
 #include "dda/common/error.hpp"
-#include "dda/common/scenario.hpp"
+#include "scenario_record.hpp"
 
 namespace dda::df {
-namespace {
-
-// A library message as the tail of a scenario sentence (YamlNode::fail adds
-// the full stop).
-std::string tail(const InputError& e) {
-  std::string s = e.what();
-  while (!s.empty() && (s.back() == '.' || s.back() == ' ')) s.pop_back();
-  return s;
-}
-
-bool is_at2(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  return ext == ".at2";
-}
-
-ButterworthSpec read_filter(const YamlNode& f) {
-  f.allow({"type", "order", "corner", "corners"});
-  ButterworthSpec s;
-  const std::string type = f.choice("type", {"lowpass", "highpass", "bandpass"});
-  s.kind = type == "lowpass" ? FilterKind::lowpass : type == "highpass" ? FilterKind::highpass : FilterKind::bandpass;
-  s.order = static_cast<int>(f.integer("order", 4, Range::closed(1, 12)));
-  if (s.kind == FilterKind::bandpass) {
-    if (f.has("corner")) f.fail_key("corner", "is for low- and high-pass filters; a band-pass takes corners: [low, high]");
-    const YamlNode c = f.child("corners");
-    const std::vector<double> v = c.as_numbers();
-    if (v.size() != 2) c.fail("must be [low, high] (two frequencies in Hz), got " + std::to_string(v.size()) + " numbers");
-    if (!(v[0] > 0) || !std::isfinite(v[1]) || !(v[1] > v[0]))
-      c.fail("must be [low, high] with 0 < low < high (Hz)");
-    s.f_low = v[0];
-    s.f_high = v[1];
-  } else {
-    if (f.has("corners")) f.fail_key("corners", "is for a band-pass filter; a " + type + " takes one corner (Hz)");
-    const double fc = f.number("corner", Range::positive());
-    (s.kind == FilterKind::lowpass ? s.f_high : s.f_low) = fc;
-  }
-  return s;
-}
-
-}  // namespace
 
 EarthquakeEntry read_earthquake(const YamlNode& n) {
   n.allow({"record", "units", "direction", "components", "scale", "resample", "filter", "ramp", "baseline", "mode",
            "foundation"});
   EarthquakeEntry e{n, "loading", {}, {}, std::nullopt};
-  GroundMotionSpec& s = e.spec;
-  s.path = resolve_scenario_path(n, n.text("record"));
-  if (n.has("units")) {
-    try {
-      s.units = parse_accel_units(n.text("units"), "units");
-    } catch (const InputError&) {
-      n.fail_key("units", "must be g or m/s2, got '" + n.text("units") + "'");
-    }
-  } else if (!is_at2(s.path)) {
-    n.fail_key("units", "is required for a CSV record (g or m/s2; only an AT2 file declares its units)");
-  }
-  if (n.has("direction")) {
-    s.direction = n.point("direction");
-    if (!std::isfinite(s.direction.norm()) || !(s.direction.norm() > 0))
-      n.fail_key("direction", "must be a non-zero direction [dx, dy]");
-    s.direction.normalize();
-  }
-  if (n.has("components")) {
-    const std::vector<YamlNode> items = n.list("components");
-    if (items.empty()) n.fail_key("components", "must name at least one of x, y");
-    s.use_x = s.use_y = false;
-    for (const YamlNode& c : items) {
-      const std::string name = c.as_text();
-      if (name != "x" && name != "y") c.fail("must be x or y, got '" + name + "'");
-      bool& use = name == "x" ? s.use_x : s.use_y;
-      if (use) c.fail("repeats component " + name);
-      use = true;
-    }
-  }
-  s.scale = n.number("scale", 1.0, Range::any());
-  if (!std::isfinite(s.scale)) n.fail_key("scale", "must be a finite number");
-  if (n.has("resample")) s.resample = n.number("resample", Range::positive());
-  if (n.has("filter")) s.filter = read_filter(n.child("filter"));
-  s.ramp = n.number("ramp", 0.0, Range::non_negative());
   e.mode = n.choice("mode", {"loading", "displacement", "incident"}, "loading");
-  s.baseline = static_cast<int>(
-      n.integer("baseline", make_ground_motion_mode(e.mode)->default_baseline(), Range::closed(0, 8)));
+  const RecordEntry r = read_record_entry(n, 2, make_ground_motion_mode(e.mode)->default_baseline());
+  GroundMotionSpec& s = e.spec;
+  s.path = r.path;
+  s.units = r.units;
+  s.direction = r.direction.head<2>();
+  s.processing = r.processing;
   if (n.has("foundation")) {
     e.foundation.emplace();
     const std::vector<YamlNode> items = n.list("foundation");
@@ -103,21 +31,13 @@ EarthquakeEntry read_earthquake(const YamlNode& n) {
   try {
     e.motion = load_ground_motion(s);
   } catch (const InputError& err) {
-    // Reading problems are the record's; processing ones (a filter that
-    // does not fit the sampling, mostly) the filter's.
-    const bool read_ok = [&] {
-      try {
-        GroundMotionSpec plain;
-        plain.path = s.path;
-        plain.units = s.units;
-        plain.direction = s.direction;
-        load_ground_motion(plain);
-        return true;
-      } catch (const InputError&) {
-        return false;
-      }
-    }();
-    n.fail_key(read_ok && s.filter ? "filter" : "record", "cannot be used: " + tail(err));
+    fail_record(n, r, [&] {
+      GroundMotionSpec plain;
+      plain.path = s.path;
+      plain.units = s.units;
+      plain.direction = s.direction;
+      load_ground_motion(plain);
+    }, err);
   }
   return e;
 }
@@ -177,7 +97,7 @@ void apply_earthquake(const EarthquakeEntry& e, const std::vector<std::string>& 
   try {
     make_ground_motion_mode(e.mode)->apply(e.motion, foundation, in);
   } catch (const InputError& err) {
-    e.node.fail_key(e.foundation ? "foundation" : "mode", "cannot be applied: " + tail(err));
+    e.node.fail_key(e.foundation ? "foundation" : "mode", "cannot be applied: " + sentence_tail(err));
   }
 }
 

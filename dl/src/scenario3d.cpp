@@ -82,10 +82,12 @@ int scenario_dimension(const YamlNode& root) {
 
 DlResult3 generate_3d_from_scenario(const YamlNode& root) {
   // The sections a 3D job reads, `cutting`, which the 3D cutter reads from
-  // the scenario stored in the fractures file, and `output` (dda run).
-  // load_scenario names the 2D-only sections more helpfully.
+  // the scenario stored in the fractures file, `output` (dda run) and the
+  // forward run's (DF reads them, df/scenario3d.hpp). load_scenario names
+  // the 2D-only sections more helpfully.
   root.allow({"name", "description", "seed", "dimension", "domain", "fracture_sets", "persistent_sets", "planes",
-              "layering", "fracture_files", "excavations", "points", "trace_planes", "cutting", "output"});
+              "layering", "fracture_files", "excavations", "points", "trace_planes", "cutting", "output",
+              "materials", "joints", "loading", "fixed", "control"});
   if (scenario_dimension(root) != 3)
     root.fail_key("dimension", "must be 3 for a 3D fracture network (add dimension: 3 at the top level)");
   detail::Builder3 b;

@@ -518,5 +518,62 @@ case_run3d_writes_everything() {
     "$DDA" run s3d_small.yaml -o out3 --min-area 1
 }
 
+# The 3D forward run end to end: DL -> DC -> DF of a block on a 20-degree
+# plane (phi = 10) slides V1's distance; a run stopped and resumed repeats
+# the uninterrupted one bit for bit; history and info know the 3D file.
+case_df3_incline_run_resume_history() {
+  cp "$SRC/tests/data/df3_incline.yaml" . || fail "copy the fixture"
+  "$DDA" run df3_incline.yaml -o out -q || fail "run"
+  for f in blocks3d.h5 results.h5 vtk/df.pvd vtk/df_blocks_00000.vtu vtk/df_contacts_00004.vtu; do
+    [ -s "out/$f" ] || fail "out/$f missing"
+  done
+  [ "$(grep -c '<DataSet' out/vtk/df.pvd)" -eq 10 ] || fail "expected 5 frames x (blocks, contacts) in df.pvd"
+  grep -q 'Name="faces"' out/vtk/df_blocks_00004.vtu || fail "the block frames are not polyhedra"
+  "$DDA" history out/results.h5 --csv --point slider > h.csv || fail "history"
+  expected="t"
+  for c in x y z ux uy uz vx vy vz sxx syy szz syz szx sxy; do expected="$expected,slider.$c"; done
+  [ "$(head -1 h.csv)" = "$expected" ] || fail "header '$(head -1 h.csv)', expected '$expected'"
+  /usr/bin/python3 - <<'PY' || fail "slide at t = 1 s is not within 1 % of g(sin20 - cos20 tan10)/2"
+import csv, math
+rows = list(csv.DictReader(open("h.csv")))
+last = rows[-1]
+assert abs(float(last["t"]) - 1.0) < 1e-12, last["t"]
+assert float(rows[0]["slider.ux"]) == 0
+s = math.sqrt(sum(float(last["slider.u" + c]) ** 2 for c in "xyz"))
+a = math.radians(20)
+expected = 9.81 * (math.sin(a) - math.cos(a) * math.tan(math.radians(10))) / 2
+print("s(1 s) = %.6f m, expected %.6f m, error %.3f %%" % (s, expected, 100 * abs(s - expected) / expected))
+assert abs(s - expected) <= 0.01 * expected
+assert abs(float(last["slider.uy"])) < 1e-9   # no drift across the slope
+PY
+  "$DDA" history out/results.h5 --csv > all.csv || fail "history of all points"
+  [ "$(head -1 all.csv | tr ',' '\n' | grep -c '^base\.')" -eq 15 ] || fail "base columns: $(head -1 all.csv)"
+  "$DDA" df df3_incline.yaml --blocks out/blocks3d.h5 -o part.h5 --stop-at-step 300 -q || fail "df --stop-at-step"
+  "$DDA" info part.h5 | grep -q "dda-results3d (scenario), 2 blocks (1 fixed), 300 steps .* incomplete" \
+    || fail "dda info on a stopped 3D run: $("$DDA" info part.h5)"
+  "$DDA" df --resume part.h5 -q || fail "resume"
+  "$DDA" history part.h5 --csv > b.csv || fail "history of the resumed run"
+  cmp -s all.csv b.csv || fail "the resumed run differs from the uninterrupted one"
+  "$DDA" history out/results.h5 --steps > a.csv && "$DDA" history part.h5 --steps > b.csv || fail "history --steps"
+  cmp -s a.csv b.csv || fail "the resumed run's step log differs"
+  "$DDA" info out/results.h5 | grep -q "dda-results3d (scenario), .* complete" || fail "dda info on a 3D results file"
+  expect_error 1 "out/results.h5: has no measurement point 'nope' \(its points are slider, base\)" -- \
+    "$DDA" history out/results.h5 --csv --point nope
+  sed 's/dt: 0.001/dt: 0/' df3_incline.yaml > s.yaml
+  expect_error 1 "s.yaml:[0-9]+: control.dt must be > 0, got 0\.$" -- "$DDA" df s.yaml --blocks out/blocks3d.h5 -o r.h5
+  sed 's/fixed: {below: 3}/fixed: {below: 30}/' df3_incline.yaml > s.yaml
+  expect_error 1 "s.yaml:[0-9]+: fixed fixes every block of out/blocks3d.h5, so nothing can move\.$" -- \
+    "$DDA" df s.yaml --blocks out/blocks3d.h5 -o r.h5
+  [ ! -e r.h5 ] || fail "a results file was written despite the errors"
+  # A runaway (a block thrown further than the model in one step) stops with
+  # the diagnosis and keeps the steps before it.
+  sed 's/  gravity: \[0, 0, -9.81\]/  gravity: [0, 0, -1.0e13]/' df3_incline.yaml > s.yaml
+  expect_error 1 "a block moves .* more than the model's size; .* run.h5 holds the run up to the step before\.$" -- \
+    "$DDA" df s.yaml --blocks out/blocks3d.h5 -o run.h5 -q
+  "$DDA" info run.h5 | grep -q "dda-results3d .* incomplete" || fail "the runaway left no results: $("$DDA" info run.h5)"
+  ls -a out | grep -q '\.tmp' && fail "temporary files left behind"
+  true
+}
+
 "case_$CASE"
 echo "PASS [$CASE]"

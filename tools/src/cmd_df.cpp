@@ -5,8 +5,7 @@
 // DDA for Windows analysis file), steps the simulation to its end with a
 // progress bar, and keeps results.h5 up to date (rewritten atomically every
 // so often, with a checkpoint), so an interrupted run resumes where it was.
-#include <unistd.h>
-
+// A 3D blocks file (and a 3D results file to resume) goes to cmd_df3.cpp.
 #include <chrono>
 #include <cmath>
 #include <csignal>
@@ -19,12 +18,15 @@
 #include "commands.hpp"
 #include "dda/common/error.hpp"
 #include "dda/common/model_io.hpp"
+#include "dda/common/model_io3.hpp"
 #include "dda/common/scenario.hpp"
 #include "dda/common/vtk.hpp"
 #include "dda/df/import_ana.hpp"
 #include "dda/df/results.hpp"
+#include "dda/df/results3d.hpp"
 #include "dda/df/runaway.hpp"
 #include "dda/df/scenario.hpp"
+#include "df_session.hpp"
 #include "pipeline.hpp"
 
 namespace dda::cli {
@@ -32,86 +34,6 @@ namespace dda::cli {
 namespace fs = std::filesystem;
 
 namespace {
-
-volatile std::sig_atomic_t g_interrupted = 0;
-extern "C" void on_interrupt(int) { g_interrupted = 1; }
-
-std::string duration(double s) {
-  if (!std::isfinite(s) || s < 0) return "?";
-  const long t = std::lround(s);
-  char buf[32];
-  if (t >= 3600)
-    std::snprintf(buf, sizeof buf, "%ldh%02ldm", t / 3600, (t % 3600) / 60);
-  else if (t >= 60)
-    std::snprintf(buf, sizeof buf, "%ldm%02lds", t / 60, t % 60);
-  else
-    std::snprintf(buf, sizeof buf, "%lds", t);
-  return buf;
-}
-
-std::string num(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
-
-// Progress on stderr: a bar redrawn in place on a terminal, a line every 10 %
-// otherwise (once the run has taken more than a second), nothing when quiet.
-class Progress {
- public:
-  Progress(bool quiet, double start_fraction)
-      : enabled_(!quiet), tty_(isatty(STDERR_FILENO) == 1), start_(Clock::now()), f0_(start_fraction) {
-    next_decile_ = std::floor(start_fraction * 10) + 1;
-  }
-  ~Progress() { finish(); }
-
-  void update(const df::Simulation& sim) {
-    if (!enabled_) return;
-    const auto now = Clock::now();
-    const double f = df::run_progress(sim);
-    const double elapsed = seconds(now - start_);
-    const double left = f > f0_ ? elapsed * (1 - f) / (f - f0_) : NAN;
-    const int step = sim.log().empty() ? 0 : sim.log().back().step;
-    const df::Control& c = sim.model().control;
-    const std::string where = c.total_time > 0 ? "t = " + fixed(sim.time()) + "/" + num(c.total_time) + " s"
-                                               : "step " + std::to_string(step) + "/" + std::to_string(c.steps);
-    if (tty_) {
-      if (seconds(now - last_draw_) < 0.2 && f < 1) return;
-      last_draw_ = now;
-      const int width = 30, filled = static_cast<int>(f * width);
-      std::string bar(static_cast<std::size_t>(filled), '#');
-      bar.resize(width, '-');
-      std::fprintf(stderr, "\rDF [%s] %3d%%  %s  step %d  %s left   ", bar.c_str(), static_cast<int>(f * 100),
-                   where.c_str(), step, duration(left).c_str());
-      std::fflush(stderr);
-      drawn_ = true;
-    } else if (f * 10 >= next_decile_) {
-      next_decile_ = std::floor(f * 10) + 1;
-      if (elapsed < 1.0) return;
-      std::fprintf(stderr, "DF: %3d%%  %s  step %d  %s elapsed, about %s left\n", static_cast<int>(f * 100),
-                   where.c_str(), step, duration(elapsed).c_str(), duration(left).c_str());
-    }
-  }
-
-  void finish() {
-    if (drawn_) std::fprintf(stderr, "\n");
-    drawn_ = false;
-  }
-
- private:
-  using Clock = std::chrono::steady_clock;
-  static double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
-  static std::string fixed(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.3g", v);
-    return buf;
-  }
-  bool enabled_, tty_;
-  Clock::time_point start_, last_draw_{};
-  double f0_;
-  double next_decile_ = 1;
-  bool drawn_ = false;
-};
 
 std::string read_text(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -121,33 +43,12 @@ std::string read_text(const std::string& path) {
   return s.str();
 }
 
-void make_dir(const fs::path& dir) {
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec) throw InputError(dir.string() + ": cannot create the output folder (" + ec.message() + ").");
-}
-
 // Everything a run needs, from a fresh start or a results file.
 struct Job {
   df::Results results;
   df::DfScenario scenario;
   OutputOptions output;
 };
-
-std::string frame_name(const char* kind, std::size_t frame) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "df_%s_%05zu.vtu", kind, frame);
-  return buf;
-}
-
-void write_pvd_series(const fs::path& dir, const std::vector<df::Frame>& frames, bool contacts) {
-  std::vector<PvdEntry> entries;
-  for (std::size_t f = 0; f < frames.size(); ++f) {
-    entries.push_back({frame_name("blocks", f), frames[f].time, 0, "blocks"});
-    if (contacts) entries.push_back({frame_name("contacts", f), frames[f].time, 1, "contacts"});
-  }
-  write_pvd((dir / "df.pvd").string(), entries);
-}
 
 void execute(Job& job, const DfStage& stage, std::optional<df::SimulationState> resume_from) {
   df::Simulation sim(df::build_model(job.scenario.input));
@@ -164,49 +65,36 @@ void execute(Job& job, const DfStage& stage, std::optional<df::SimulationState> 
     rc.on_frame = [&job, vtk, contacts](const df::Simulation& s, std::size_t frame) {
       df::write_blocks_frame_vtu((vtk / frame_name("blocks", frame)).string(), s);
       if (contacts) df::write_contacts_vtu((vtk / frame_name("contacts", frame)).string(), s);
-      write_pvd_series(vtk, job.results.frames, contacts);
+      std::vector<double> times;
+      for (const df::Frame& f : job.results.frames) times.push_back(f.time);
+      write_pvd_series(vtk, times, contacts);
     };
   }
   Progress progress(stage.quiet, df::run_progress(sim));
-  rc.on_step = [&progress](const df::Simulation& s) { progress.update(s); };
-  g_interrupted = 0;
-  rc.interrupted = &g_interrupted;
-  auto old_int = std::signal(SIGINT, on_interrupt);
-  auto old_term = std::signal(SIGTERM, on_interrupt);
+  rc.on_step = [&progress](const df::Simulation& s) {
+    const int step = s.log().empty() ? 0 : s.log().back().step;
+    const df::Control& c = s.model().control;
+    progress.update(df::run_progress(s), progress_where(s.time(), c.total_time, step, c.steps), step);
+  };
   df::RunEnd end;
-  try {
-    end = df::run_recorded(sim, job.results, stage.results_path, rc);
-  } catch (const df::RunawayError& e) {
-    std::signal(SIGINT, old_int);
-    std::signal(SIGTERM, old_term);
-    progress.finish();
-    std::string sentence = e.what();
-    if (!sentence.empty() && sentence.back() == '.') sentence.pop_back();
-    throw InputError(sentence + "; " + stage.results_path + " holds the run up to the step before.");
-  } catch (...) {
-    std::signal(SIGINT, old_int);
-    std::signal(SIGTERM, old_term);
-    throw;
+  {
+    InterruptGuard guard;
+    rc.interrupted = guard.flag();
+    try {
+      end = df::run_recorded(sim, job.results, stage.results_path, rc);
+    } catch (const df::RunawayError& e) {
+      progress.finish();
+      throw_runaway(e, stage.results_path);
+    }
   }
-  std::signal(SIGINT, old_int);
-  std::signal(SIGTERM, old_term);
   progress.finish();
 
   int sliding = 0, locked = 0;
   if (!sim.log().empty()) sliding = sim.log().back().sliding, locked = sim.log().back().locked;
-  const std::string summary = std::to_string(sim.log().size()) + " steps to t = " + num(sim.time()) + " s (" +
-                              std::to_string(sliding) + " sliding and " + std::to_string(locked) +
-                              " locked contacts at the end)";
-  if (end == df::RunEnd::Interrupted) {
-    std::cerr << "dda: interrupted after " << summary << "; " << stage.results_path
-              << " holds the run so far (continue with `dda df --resume " << stage.results_path << "`).\n";
-    std::exit(130);
-  }
-  if (end == df::RunEnd::Stopped)
-    say(stage.quiet, "DF: stopped after " + summary + "; continue with `dda df --resume " + stage.results_path +
-                         "`\n");
-  else
-    say(stage.quiet, "DF: " + summary + " written to " + stage.results_path + "\n");
+  report_run_end(end, std::to_string(sim.log().size()) + " steps to t = " + num(sim.time()) + " s (" +
+                          std::to_string(sliding) + " sliding and " + std::to_string(locked) +
+                          " locked contacts at the end)",
+                 stage);
 }
 
 Job job_from_scenario(const YamlNode& root, const BlockModel& blocks, const std::string& blocks_path) {
@@ -298,7 +186,7 @@ void add_df_command(CLI::App& app, const GlobalOptions& global) {
   cmd->add_option("input", opt->input,
                   "Scenario (.yaml) with materials, joints, loading, fixed and control; or a DDA for Windows "
                   "analysis file (.ana)");
-  cmd->add_option("--blocks", opt->blocks, "Blocks file written by `dda dc`");
+  cmd->add_option("--blocks", opt->blocks, "Blocks file written by `dda dc` (2D, or 3D with a dimension: 3 scenario)");
   cmd->add_option("-o,--output", opt->output,
                   "Results file to write (HDF5); with --resume, defaults to the file resumed");
   cmd->add_option("--resume", opt->resume, "Continue the run saved in this results file from its checkpoint");
@@ -316,13 +204,27 @@ void add_df_command(CLI::App& app, const GlobalOptions& global) {
       if (!opt->input.empty() || !opt->blocks.empty())
         throw InputError("--resume continues the run stored in " + opt->resume +
                          "; give no scenario or --blocks with it.");
-      resume(opt->resume, stage);
+      if (h5_format_of(opt->resume) == df3::kResults3dFormat)
+        resume_df3(opt->resume, stage);
+      else
+        resume(opt->resume, stage);
       return;
     }
     if (opt->input.empty()) throw InputError("dda df needs a scenario (.yaml) or analysis (.ana) file, or --resume.");
     if (opt->blocks.empty()) throw InputError("dda df needs --blocks BLOCKS.h5 (written by `dda dc`).");
     if (opt->output.empty()) throw InputError("dda df needs -o RESULTS.h5, the results file to write.");
     if (!fs::exists(opt->input)) throw InputError(opt->input + ": no such file.");
+    const bool scenario3d = !df::is_ana_path(opt->input) && dl_input_dimension(opt->input) == 3;
+    if (h5_format_of(opt->blocks) == kBlocks3dFormat) {
+      if (!scenario3d)
+        throw InputError(opt->blocks + ": holds 3D blocks, but " + opt->input +
+                         " is not a 3D scenario (add dimension: 3 to it).");
+      run_df3_scenario(load_scenario(opt->input), read_polyhedra_h5(opt->blocks), opt->blocks, stage);
+      return;
+    }
+    if (scenario3d)
+      throw InputError(opt->input + ": is a 3D scenario, so it needs a 3D blocks file (dda-blocks3d), not " +
+                       opt->blocks + ".");
     const BlockModel blocks = read_blocks_h5(opt->blocks);
     Job job;
     if (df::is_ana_path(opt->input)) {

@@ -1,7 +1,7 @@
 // dda history results.h5 [--csv] [--point NAME ...] [--steps] [-o FILE]
 //
-// The measurement-point time series of a results file, as a summary or as
-// CSV (one row per sample, sample 0 being the start of the run).
+// The measurement-point time series of a results file, 2D or 3D, as a
+// summary or as CSV (one row per sample, sample 0 being the start of the run).
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -11,7 +11,9 @@
 #include "commands.hpp"
 #include "dda/common/atomic_file.hpp"
 #include "dda/common/error.hpp"
+#include "dda/common/model_io.hpp"
 #include "dda/df/results.hpp"
+#include "dda/df/results3d.hpp"
 #include "results_points.hpp"
 
 namespace dda::cli {
@@ -23,7 +25,10 @@ constexpr const char* kColumnsHelp =
     "(displacement from the start of the run, m), NAME.vx NAME.vy (velocity, m/s), NAME.sxx NAME.syy NAME.sxy "
     "(stress of the block the point lies in, Pa, tension positive); with --acceleration also NAME.ax NAME.ay "
     "after each point's columns (acceleration during the step that ended at the sample, m/s^2). With --steps: step, t, dt, iterations, "
-    "dt_cuts, converged, open, sliding, locked, max_displacement, kinetic_energy, elastic_energy.";
+    "dt_cuts, converged, open, sliding, locked, max_displacement, kinetic_energy, elastic_energy. "
+    "A 3D results file: t, then NAME.x NAME.y NAME.z NAME.ux NAME.uy NAME.uz NAME.vx NAME.vy NAME.vz NAME.sxx "
+    "NAME.syy NAME.szz NAME.syz NAME.szx NAME.sxy; with --steps: step, t, dt, iterations, dt_cuts, converged, open, "
+    "sliding, locked, max_displacement.";
 
 void put(std::string& out, double v) {
   char buf[32];
@@ -109,6 +114,77 @@ std::string summary(const df::Results& r, const std::string& path, const std::ve
   return s.str();
 }
 
+// ----------------------------------------------------------------- 3D
+
+void put_all(std::string& out, std::initializer_list<double> values) {
+  for (const double v : values) {
+    out += ',';
+    put(out, v);
+  }
+}
+
+std::string points_csv3(const df3::Results3& r, const std::vector<std::size_t>& which) {
+  std::string out = "t";
+  for (std::size_t p : which)
+    for (const char* c : {"x", "y", "z", "ux", "uy", "uz", "vx", "vy", "vz", "sxx", "syy", "szz", "syz", "szx", "sxy"})
+      out += "," + r.point_names[p] + "." + c;
+  out += "\n";
+  if (r.histories.empty()) {  // no measurement points: just the times
+    put(out, r.log.empty() ? 0.0 : r.log.front().time - r.log.front().dt);
+    out += "\n";
+    for (const df3::StepInfo3& st : r.log) {
+      put(out, st.time);
+      out += "\n";
+    }
+    return out;
+  }
+  for (std::size_t s = 0; s < r.histories[0].size(); ++s) {
+    put(out, r.histories[0][s].time);
+    for (std::size_t p : which) {
+      const df3::MeasurementSample3& m = r.histories[p][s];
+      const Vec3 &x = m.position, &u = m.displacement, &v = m.velocity;
+      put_all(out, {x.x(), x.y(), x.z(), u.x(), u.y(), u.z(), v.x(), v.y(), v.z()});
+      put_all(out, {m.stress[0], m.stress[1], m.stress[2], m.stress[3], m.stress[4], m.stress[5]});
+    }
+    out += "\n";
+  }
+  return out;
+}
+
+std::string steps_csv3(const df3::Results3& r) {
+  std::string out = "step,t,dt,iterations,dt_cuts,converged,open,sliding,locked,max_displacement\n";
+  for (const df3::StepInfo3& s : r.log) {
+    out += std::to_string(s.step);
+    put_all(out, {s.time, s.dt});
+    out += "," + std::to_string(s.iterations) + "," + std::to_string(s.dt_cuts) + "," +
+           std::to_string(s.converged ? 1 : 0) + "," + std::to_string(s.open) + "," + std::to_string(s.sliding) + "," +
+           std::to_string(s.locked);
+    put_all(out, {s.max_displacement});
+    out += "\n";
+  }
+  return out;
+}
+
+std::string summary3(const df3::Results3& r, const std::string& path, const std::vector<std::size_t>& which) {
+  std::ostringstream s;
+  const double t = r.log.empty() ? 0 : r.log.back().time;
+  s << path << ": " << r.log.size() << " steps to t = " << t << " s" << (r.complete ? "" : " (not complete)") << ", "
+    << r.point_names.size() << " measurement points (3D)\n";
+  if (which.empty()) return s.str();
+  s << "point            block        ux (m)        uy (m)        uz (m)     |u|max (m)\n";
+  for (std::size_t p : which) {
+    const auto& h = r.histories[p];
+    double umax = 0;
+    for (const df3::MeasurementSample3& m : h) umax = std::max(umax, m.displacement.norm());
+    char line[200];
+    const Vec3& u = h.back().displacement;
+    std::snprintf(line, sizeof line, "%-14s %7d %13.6g %13.6g %13.6g %13.6g\n", r.point_names[p].c_str(),
+                  r.point_blocks[p], u.x(), u.y(), u.z(), umax);
+    s << line;
+  }
+  return s.str();
+}
+
 }  // namespace
 
 void add_history_command(CLI::App& app, const GlobalOptions&) {
@@ -128,6 +204,23 @@ void add_history_command(CLI::App& app, const GlobalOptions&) {
   cmd->add_flag("--steps", opt->steps, "Print the per-step statistics as CSV instead");
   cmd->add_option("-o,--output", opt->output, "Write to this file instead of the standard output");
   cmd->callback([opt] {
+    auto emit = [&opt](const std::string& text) {
+      if (opt->output.empty())
+        std::cout << text << std::flush;
+      else
+        write_text_atomically(opt->output, text);
+    };
+    if (h5_format_of(opt->input) == df3::kResults3dFormat) {
+      const df3::Results3 r = df3::read_results3_h5(opt->input, false);
+      if (opt->acceleration)
+        throw InputError(opt->input + ": a 3D results file holds no accelerations (--acceleration is for 2D runs).");
+      std::vector<std::size_t> which;
+      for (const std::string& name : opt->points) which.push_back(measurement_point_index(r.point_names, name, opt->input));
+      if (opt->points.empty())
+        for (std::size_t k = 0; k < r.point_names.size(); ++k) which.push_back(k);
+      emit(opt->steps ? steps_csv3(r) : opt->csv ? points_csv3(r, which) : summary3(r, opt->input, which));
+      return;
+    }
     const df::Results r = df::read_results_h5(opt->input, false);
     if (opt->acceleration && !r.has_acceleration)
       throw InputError(opt->input + ": holds no accelerations (it was written by an older dda); run it again.");
@@ -142,10 +235,7 @@ void add_history_command(CLI::App& app, const GlobalOptions&) {
       text = points_csv(r, which, opt->acceleration);
     else
       text = summary(r, opt->input, which);
-    if (opt->output.empty())
-      std::cout << text << std::flush;
-    else
-      write_text_atomically(opt->output, text);
+    emit(text);
   });
 }
 

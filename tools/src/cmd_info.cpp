@@ -6,6 +6,7 @@
 #include "dda/common/model_io.hpp"
 #include "dda/common/model_io3.hpp"
 #include "dda/df/results.hpp"
+#include "dda/df/results3d.hpp"
 
 namespace dda::cli {
 
@@ -58,6 +59,18 @@ void add_info_command(CLI::App& app, const GlobalOptions&) {
                 << " blocks, " << r.log.size() << " steps to t = " << t_end << " s, "
                 << r.point_names.size() << " measurement points, " << r.bolt_names.size() << " bolts, "
                 << (r.complete ? "complete" : "incomplete (resume with `dda df --resume`)") << "\n";
+      print_provenance(r.source.provenance);
+      if (*show_scenario) std::cout << "\n" << r.source.provenance.scenario_text;
+    } else if (format == df3::kResults3dFormat) {
+      const df3::Results3 r = df3::read_results3_h5(*input, /*with_state=*/false);
+      const double t_end = r.log.empty() ? 0.0 : r.log.back().time;
+      std::size_t held = 0;
+      for (const bool f : r.fixed) held += f ? 1 : 0;
+      std::cout << *input << ": dda-results3d (" << r.source.input_kind << "), " << r.fixed.size() << " blocks ("
+                << held << " fixed), " << r.log.size() << " steps to t = " << t_end << " s, " << r.point_names.size()
+                << " measurement points, "
+                << (r.complete ? "complete" : "incomplete (resume with `dda df --resume`)") << "\n";
+      std::cout << "blocks from:     " << (r.source.blocks_path.empty() ? "(unknown)" : r.source.blocks_path) << "\n";
       print_provenance(r.source.provenance);
       if (*show_scenario) std::cout << "\n" << r.source.provenance.scenario_text;
     } else {

@@ -16,6 +16,7 @@
 #include "dda/common/vtk.hpp"
 #include "dda/dc/stats.hpp"
 #include "dda/df/scenario.hpp"
+#include "dda/df/scenario3d.hpp"
 #include "dda/dc/cut3d.hpp"
 #include "dda/dl/generate.hpp"
 #include "dda/dl/scenario3d.hpp"
@@ -25,16 +26,6 @@
 namespace dda::cli {
 
 namespace fs = std::filesystem;
-
-namespace {
-
-void make_dir(const fs::path& dir) {
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec) throw InputError(dir.string() + ": cannot create the output folder (" + ec.message() + ").");
-}
-
-}  // namespace
 
 OutputOptions parse_output_options(const YamlNode& root) {
   OutputOptions o;
@@ -73,6 +64,7 @@ void add_run_command(CLI::App& app, const GlobalOptions& global) {
         throw InputError("--min-area, --max-aspect and --slivers apply to 2D cuts; " + opt->scenario +
                          " is a 3D scenario.");
       dc::parse_cut3d_options(root.optional_child("cutting"));  // check before any stage runs
+      df3::check_df3_scenario(root);
       if (opt->no_plots) out.plots = false;
       if (opt->no_vtk) out.vtk = false;
       make_dir(fs::path(opt->outdir));

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "dda/common/block_model.hpp"
+#include "dda/common/polyhedron_model.hpp"
 #include "dda/common/yaml_reader.hpp"
 
 namespace dda::cli {
@@ -58,5 +59,10 @@ struct DfStage {
 // A forward run of a YAML scenario on `blocks` (read from `blocks_path`).
 void run_df_scenario(const YamlNode& root, const BlockModel& blocks, const std::string& blocks_path,
                      const DfStage& stage);
+// The same in 3D (cmd_df3.cpp): a dimension: 3 scenario on polyhedra.
+void run_df3_scenario(const YamlNode& root, const PolyhedronModel& blocks, const std::string& blocks_path,
+                      const DfStage& stage);
+// `dda df --resume` of a dda-results3d file.
+void resume_df3(const std::string& path, DfStage stage);
 
 }  // namespace dda::cli

@@ -83,6 +83,12 @@ std::string describe_cut(const BlockModel& blocks, const std::string& path) {
   return s.str();
 }
 
+void make_dir(const std::filesystem::path& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw InputError(dir.string() + ": cannot create the output folder (" + ec.message() + ").");
+}
+
 void say(bool quiet, const std::string& text) {
   if (!quiet) std::cout << text << std::flush;
 }

@@ -2,6 +2,7 @@
 // The pipeline stages as the commands use them: each stage reads what the
 // previous one wrote, reports what it did, and writes its file atomically.
 #include <CLI/CLI.hpp>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -52,6 +53,9 @@ void add_sliver_options(CLI::App* cmd, SliverOverrides& o);
 
 // One line describing a cut: block count and area, and where it went.
 std::string describe_cut(const BlockModel& blocks, const std::string& path);
+
+// Creates a folder (and its parents); InputError naming it if that fails.
+void make_dir(const std::filesystem::path& dir);
 
 // Prints `text` unless quiet.
 void say(bool quiet, const std::string& text);

@@ -3,7 +3,9 @@
 // sections/<name>.lines.h5 and <name>.blocks.h5 for every trace plane (the
 // 2D section cut by the 2D cutter: the hybrid 3D network -> 2D DDA workflow),
 // vtk/{fractures.vtu, blocks3d.vtu, model.pvd} and
-// figures/{fractures, blocks3d, blocks3d_exploded}.png.
+// figures/{fractures, blocks3d, blocks3d_exploded}.png; a scenario with a
+// `control` section is then run forward in 3D into results.h5 and
+// vtk/{df.pvd, df_blocks_*.vtu, df_contacts_*.vtu} (cmd_df3.cpp).
 #include <filesystem>
 
 #include "commands.hpp"
@@ -17,6 +19,7 @@
 #include "dda/dc/stats3d.hpp"
 #include "dda/dl/scenario3d.hpp"
 #include "dda/dl/trace_plane.hpp"
+#include "dda/df/scenario.hpp"
 #include "pipeline.hpp"
 #include "pipeline3d.hpp"
 #include "plot_runner.hpp"
@@ -67,14 +70,22 @@ void run_pipeline_3d(const YamlNode& root, const fs::path& dir, const OutputOpti
   if (out.plots) {
     if (!plotting_available()) {
       say(quiet, "figures skipped: /usr/bin/python3 with matplotlib and h5py is not installed\n");
-      return;
+    } else {
+      const fs::path figs = dir / "figures";
+      fs::create_directories(figs);
+      run_plot_script({fractures_h5, "-o", (figs / "fractures.png").string()});
+      run_plot_script({blocks_h5, "-o", (figs / "blocks3d.png").string()});
+      run_plot_script(
+          {blocks_h5, "-o", (figs / "blocks3d_exploded.png").string(), "--explode", "0.4", "--color", "body"});
+      say(quiet, "figures written to " + figs.string() + "\n");
     }
-    const fs::path figs = dir / "figures";
-    fs::create_directories(figs);
-    run_plot_script({fractures_h5, "-o", (figs / "fractures.png").string()});
-    run_plot_script({blocks_h5, "-o", (figs / "blocks3d.png").string()});
-    run_plot_script({blocks_h5, "-o", (figs / "blocks3d_exploded.png").string(), "--explode", "0.4", "--color", "body"});
-    say(quiet, "figures written to " + figs.string() + "\n");
+  }
+  if (df::scenario_has_df(root)) {
+    DfStage stage;
+    stage.results_path = (dir / "results.h5").string();
+    if (out.vtk) stage.vtk_dir = (dir / "vtk").string();
+    stage.quiet = quiet;
+    run_df3_scenario(root, cut.model, blocks_h5, stage);
   }
 }
 

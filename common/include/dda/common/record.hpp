@@ -20,6 +20,7 @@
 //    The one component is placed along the caller-given direction.
 #include <Eigen/Core>
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -75,6 +76,21 @@ void filter_record(AccelRecord& record, const ButterworthSpec& spec);
 // Step of a uniformly sampled record; InputError if it is not uniform (to
 // 1e-6 relative) or has fewer than two samples. `what` names the operation.
 double uniform_step(const AccelRecord& record, const std::string& what);
+
+// What a solver does to a record before using it as ground motion (the
+// earthquake of the 2D and the 3D scenario alike), in this order: keep the
+// chosen components (the others become zero), scale, resample, filter, ramp
+// up, baseline correction (the corrected acceleration, a - P'', replaces the
+// record's; see integrate_record).
+struct RecordProcessing {
+  std::array<bool, 3> use{true, true, true};  // x, y, z
+  double scale = 1.0;
+  double resample = 0.0;                      // s; 0: keep the record's samples
+  std::optional<ButterworthSpec> filter;      // zero-phase Butterworth
+  double ramp = 0.0;                          // s, linear ramp-up from the first sample
+  int baseline = 0;                           // polynomial degree; < 2: none
+};
+void process_record(AccelRecord& record, const RecordProcessing& p);
 
 // Velocity and displacement by the trapezoidal rule from rest (v = d = 0 at
 // the first sample), with an optional baseline correction:

@@ -35,19 +35,15 @@
 
 namespace dda::df {
 
-// What to read and how to process it, in this order: read (units, the
-// direction of a one-component record), keep the chosen components, scale,
-// resample, filter, ramp up, baseline correction.
+// What to read and how to process it: read (units, the direction of a
+// one-component record), then RecordProcessing (record.hpp: components,
+// scale, resample, filter, ramp up, baseline correction). Components x
+// (horizontal) and y (vertical): the model's axes.
 struct GroundMotionSpec {
   std::string path;                        // record file: CSV t, ax[, ay] or t, a; or PEER NGA AT2
   AccelUnits units = AccelUnits::unspecified;  // required for CSV; AT2 is g
   Vec2 direction{1, 0};                    // model direction of a one-component record
-  bool use_x = true, use_y = true;         // components that act (x horizontal, y vertical)
-  double scale = 1.0;
-  double resample = 0.0;                   // s; 0: keep the record's samples
-  std::optional<ButterworthSpec> filter;   // zero-phase Butterworth
-  double ramp = 0.0;                       // s, linear ramp-up from the first sample
-  int baseline = 0;                        // polynomial degree of the baseline correction; < 2: none
+  RecordProcessing processing;
 };
 
 struct GroundMotion {

@@ -6,9 +6,9 @@
 // run continues exactly (`dda df --resume`). ParaView series of blocks and
 // contacts are written alongside, frame by frame.
 //
-// run_recorded() drives a Simulation to its end and rewrites the results
-// file atomically every so often (a temporary file renamed into place), so an
-// interrupted run leaves the last complete file, ready to resume.
+// run_recorded() drives a Simulation to its end (run_loop.hpp) and rewrites
+// the results file atomically every so often (a temporary file renamed into
+// place), so an interrupted run leaves the last complete file, ready to resume.
 #include <csignal>
 #include <functional>
 #include <optional>
@@ -17,6 +17,7 @@
 
 #include "dda/common/block_model.hpp"
 #include "dda/common/provenance.hpp"
+#include "dda/df/run_loop.hpp"
 #include "dda/df/scenario.hpp"
 #include "dda/df/simulation.hpp"
 
@@ -75,16 +76,7 @@ Results read_results_h5(const std::string& path, bool with_state = true);
 void write_blocks_frame_vtu(const std::string& path, const Simulation& sim);
 void write_contacts_vtu(const std::string& path, const Simulation& sim);
 
-enum class RunEnd { Finished, Stopped, Interrupted };
-
-struct RunControl {
-  double checkpoint_seconds = 60;       // rewrite the results file at least this often (wall clock); 0: only at the end
-  int checkpoint_steps = 0;             // and every this many steps (0: off)
-  std::optional<int> stop_at_step;      // stop (with a checkpoint) once the run has this many steps
-  std::function<void(const Simulation&, std::size_t frame)> on_frame;  // after each saved frame
-  std::function<void(const Simulation&)> on_step;                      // after each step
-  const volatile std::sig_atomic_t* interrupted = nullptr;            // set by a signal handler: stop cleanly
-};
+using RunControl = BasicRunControl<Simulation>;
 
 // Steps `sim` to the end of its Control (total_time, or steps), saving a
 // frame on the schedule of `results.output` and rewriting `path` on the
@@ -95,5 +87,11 @@ RunEnd run_recorded(Simulation& sim, Results& results, const std::string& path, 
 
 // Fraction of the run done, 0..1 (time or steps).
 double run_progress(const Simulation& sim);
+
+// The hooks of run_recorded_loop (run_loop.hpp) for the 2D solver.
+bool run_finished(const Simulation& sim);
+void run_step(Simulation& sim);
+int last_step(const Simulation& sim);
+void write_results(const std::string& path, const Results& results, const Simulation& sim, bool complete);
 
 }  // namespace dda::df

@@ -48,5 +48,7 @@ void check_blocks_for_df(const BlockModel& blocks, const std::string& blocks_pat
 // Resolves an unset output schedule: 1/20 of the run (total_time / 20, or
 // every max(1, steps / 20) steps).
 OutputSchedule resolve_output_schedule(OutputSchedule s, const Control& control);
+// The same for a run of `total_time` seconds, or of `steps` steps when that is 0.
+OutputSchedule resolve_output_schedule(OutputSchedule s, double total_time, int steps);
 
 }  // namespace dda::df

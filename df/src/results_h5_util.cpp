@@ -1,0 +1,101 @@
+// Shared pieces of the 2D and 3D results files (results_h5_util.hpp).
+#include "results_h5_util.hpp"
+
+#include "dda/common/error.hpp"
+
+namespace dda::df::h5io {
+
+std::vector<double> flat(const std::vector<Vec2>& v) {
+  std::vector<double> out;
+  out.reserve(2 * v.size());
+  for (const Vec2& p : v) out.insert(out.end(), {p.x(), p.y()});
+  return out;
+}
+
+std::vector<double> flat(const std::vector<Vec3>& v) {
+  std::vector<double> out;
+  out.reserve(3 * v.size());
+  for (const Vec3& p : v) out.insert(out.end(), {p.x(), p.y(), p.z()});
+  return out;
+}
+
+h5::Id subgroup(hid_t parent, const std::string& name) {
+  h5::Id g(H5Gcreate2(parent, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+  if (!g.valid()) throw InputError("cannot create HDF5 group " + name + ".");
+  return g;
+}
+
+void write_root(h5::Writer& w, const char* format, const char* units, const ResultsSource& source,
+                const OutputSchedule& output, bool complete, double time, int steps) {
+  const hid_t root = w.file();
+  const Provenance& p = source.provenance;
+  w.attr_text(root, "format", format);
+  w.attr_i32(root, "format_version", kResultsFormatVersion);
+  w.attr_text(root, "units", units);
+  w.attr_text(root, "program_version", p.program_version.empty() ? std::string(version_string()) : p.program_version);
+  w.attr_text(root, "scenario_path", p.scenario_path);
+  w.attr_text(root, "scenario", p.scenario_text);
+  w.attr_u64(root, "seed", p.seed);
+  w.attr_text(root, "created_utc", utc_now());
+  w.attr_text(root, "input_kind", source.input_kind);
+  w.attr_text(root, "blocks_path", source.blocks_path);
+  w.attr_f64(root, "output_interval", output.interval);
+  w.attr_i32(root, "output_every", output.every);
+  w.attr_i32(root, "complete", complete ? 1 : 0);
+  w.attr_f64(root, "time", time);
+  w.attr_i32(root, "steps", steps);
+}
+
+RootInfo read_root(const h5::Reader& r, const char* format) {
+  const hid_t root = r.file();
+  const auto found = r.attr_text(root, "format", "the file");
+  if (!found) r.fail(std::string("has no format attribute, so it was not written by dda (expected a ") + format + " file)");
+  if (*found != format) r.fail("is a " + *found + " file, expected a " + format + " file");
+  const auto version = r.attr_int(root, "format_version", "the file");
+  if (!version || *version > kResultsFormatVersion)
+    r.fail("has results format version " + (version ? std::to_string(*version) : std::string("(none)")) +
+           "; this dda reads version " + std::to_string(kResultsFormatVersion));
+  RootInfo out;
+  Provenance& p = out.source.provenance;
+  p.program_version = r.attr_text(root, "program_version", "the file").value_or("");
+  p.scenario_path = r.attr_text(root, "scenario_path", "the file").value_or("");
+  p.scenario_text = r.attr_text(root, "scenario", "the file").value_or("");
+  p.seed = r.attr_u64(root, "seed", "the file").value_or(0);
+  p.created_utc = r.attr_text(root, "created_utc", "the file").value_or("");
+  out.source.input_kind = r.attr_text(root, "input_kind", "the file").value_or("scenario");
+  out.source.blocks_path = r.attr_text(root, "blocks_path", "the file").value_or("");
+  out.output.interval = r.attr_f64(root, "output_interval", "the file").value_or(0);
+  out.output.every = static_cast<int>(r.attr_int(root, "output_every", "the file").value_or(0));
+  out.complete = r.attr_int(root, "complete", "the file").value_or(0) != 0;
+  return out;
+}
+
+std::vector<double> read_f64(const h5::Reader& r, const std::string& name, const std::vector<hsize_t>& dims) {
+  h5::Array<double> a = r.f64(name);
+  if (a.dims != dims) {
+    std::string want = "(";
+    for (std::size_t i = 0; i < dims.size(); ++i) want += (i ? ", " : "") + std::to_string(dims[i]);
+    r.fail("dataset " + name + " has an unexpected shape, expected " + want + (dims.size() == 1 ? ",)" : ")"));
+  }
+  return std::move(a.data);
+}
+
+std::vector<std::int64_t> read_i64(const h5::Reader& r, const std::string& name, std::size_t n) {
+  h5::Array<std::int64_t> a = r.i64(name);
+  if (a.dims != std::vector<hsize_t>{n})
+    r.fail("dataset " + name + " has an unexpected shape, expected (" + std::to_string(n) + ",)");
+  return std::move(a.data);
+}
+
+std::size_t length(const h5::Reader& r, const std::string& name) {
+  const h5::Array<double> a = r.f64(name);
+  if (a.dims.empty()) r.fail("dataset " + name + " must be an array");
+  return a.dims[0];
+}
+
+std::size_t rows_of(const h5::Reader& r, const std::string& name) {
+  const h5::Array<double> a = r.f64(name);
+  return a.dims.empty() ? 0 : a.dims[0];
+}
+
+}  // namespace dda::df::h5io

@@ -1,0 +1,127 @@
+// The 3D forward run behind `dda df` (a dda-blocks3d file), `dda df --resume`
+// (a dda-results3d file) and `dda run` (a dimension: 3 scenario with a
+// control section): the 2D run's session (df_session.hpp) around a
+// Simulation3 and its results file (df/results3d.hpp).
+#include <filesystem>
+#include <iostream>
+
+#include "commands.hpp"
+#include "dda/common/error.hpp"
+#include "dda/common/scenario.hpp"
+#include "dda/df/results3d.hpp"
+#include "dda/df/scenario3d.hpp"
+#include "df_session.hpp"
+#include "pipeline.hpp"
+
+namespace dda::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Job3 {
+  df3::Results3 results;
+  df3::DfScenario3 scenario;
+  OutputOptions output;
+};
+
+Job3 job_from_scenario3(const YamlNode& root, const PolyhedronModel& blocks, const std::string& blocks_path) {
+  Job3 job;
+  job.scenario = df3::read_df3_scenario(root, blocks, blocks_path);
+  job.output = parse_output_options(root);
+  df3::Results3& r = job.results;
+  r.source.provenance.scenario_path = root.file();
+  r.source.provenance.scenario_text = root.source_text();
+  r.source.provenance.seed = blocks.provenance.seed ? blocks.provenance.seed : scenario_seed(root);
+  r.source.input_kind = "scenario";
+  r.source.blocks_path = blocks_path;
+  r.blocks = blocks;
+  r.output = df3::resolve_output_schedule(job.scenario.output, job.scenario.model.control);
+  return job;
+}
+
+void execute3(Job3& job, const DfStage& stage, const std::optional<df3::Simulation3State>& resume_from) {
+  df3::Simulation3 sim(job.scenario.model);
+  if (resume_from) sim.restore(*resume_from);
+
+  df3::RunControl3 rc;
+  rc.checkpoint_seconds = job.output.checkpoint_seconds;
+  rc.checkpoint_steps = job.output.checkpoint_steps;
+  rc.stop_at_step = stage.stop_at_step;
+  const fs::path vtk(stage.vtk_dir);
+  if (!stage.vtk_dir.empty()) {
+    make_dir(vtk);
+    const bool contacts = job.output.vtk_contacts;
+    rc.on_frame = [&job, vtk, contacts](const df3::Simulation3& s, std::size_t frame) {
+      df3::write_blocks3_frame_vtu((vtk / frame_name("blocks", frame)).string(), s, job.results.blocks.blocks);
+      if (contacts) df3::write_contacts3_vtu((vtk / frame_name("contacts", frame)).string(), s);
+      std::vector<double> times;
+      for (const df3::Frame3& f : job.results.frames) times.push_back(f.time);
+      write_pvd_series(vtk, times, contacts);
+    };
+  }
+  Progress progress(stage.quiet, df3::run_progress(sim));
+  rc.on_step = [&progress](const df3::Simulation3& s) {
+    const int step = df3::last_step(s);
+    const df3::Control3& c = s.model().control;
+    progress.update(df3::run_progress(s), progress_where(s.time(), c.total_time, step, c.steps), step);
+  };
+  df::RunEnd end;
+  {
+    InterruptGuard guard;
+    rc.interrupted = guard.flag();
+    try {
+      end = df3::run_recorded(sim, job.results, stage.results_path, rc);
+    } catch (const df::RunawayError& e) {
+      progress.finish();
+      throw_runaway(e, stage.results_path);
+    }
+  }
+  progress.finish();
+
+  int sliding = 0, locked = 0;
+  if (!sim.log().empty()) sliding = sim.log().back().sliding, locked = sim.log().back().locked;
+  report_run_end(end, std::to_string(sim.log().size()) + " steps to t = " + num(sim.time()) + " s (" +
+                          std::to_string(sliding) + " sliding and " + std::to_string(locked) +
+                          " locked contacts at the end)",
+                 stage);
+}
+
+}  // namespace
+
+void run_df3_scenario(const YamlNode& root, const PolyhedronModel& blocks, const std::string& blocks_path,
+                      const DfStage& stage) {
+  Job3 job = job_from_scenario3(root, blocks, blocks_path);
+  execute3(job, stage, std::nullopt);
+}
+
+void resume_df3(const std::string& path, DfStage stage) {
+  df3::Results3 saved = df3::read_results3_h5(path);
+  if (stage.results_path.empty()) stage.results_path = path;
+  const df::ResultsSource& src = saved.source;
+  if (saved.complete) {
+    say(stage.quiet, path + ": the run is already complete (" + std::to_string(saved.log.size()) +
+                         " steps); nothing to resume.\n");
+    return;
+  }
+  Job3 job;
+  try {
+    const YamlNode root = YamlNode::load_string(src.provenance.scenario_text, src.provenance.scenario_path);
+    root.allow(scenario_sections());
+    job = job_from_scenario3(root, saved.blocks, src.blocks_path);
+  } catch (const InputError& e) {
+    throw InputError(path + ": the scenario stored in the file no longer reads: " + e.what());
+  }
+  // What was saved wins: the schedule the run started with.
+  job.results.source = src;
+  job.results.output = saved.output;
+  job.results.frames = std::move(saved.frames);
+  if (!stage.vtk_dir.empty() && !job.results.frames.empty())
+    say(stage.quiet, "DF: resuming at frame " + std::to_string(job.results.frames.size()) +
+                         "; earlier ParaView frames are expected in " + stage.vtk_dir + "\n");
+  say(stage.quiet, "DF: resuming " + path + " at step " + std::to_string(saved.log.size()) + ", t = " +
+                       num(saved.checkpoint->time) + " s\n");
+  execute3(job, stage, saved.checkpoint);
+}
+
+}  // namespace dda::cli

@@ -1,0 +1,133 @@
+#include "df_session.hpp"
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+
+#include "dda/common/error.hpp"
+#include "dda/common/vtk.hpp"
+#include "pipeline.hpp"
+
+namespace dda::cli {
+
+namespace {
+
+volatile std::sig_atomic_t g_interrupted = 0;
+extern "C" void on_interrupt(int) { g_interrupted = 1; }
+
+double seconds(std::chrono::steady_clock::duration d) { return std::chrono::duration<double>(d).count(); }
+
+std::string duration(double s) {
+  if (!std::isfinite(s) || s < 0) return "?";
+  const long t = std::lround(s);
+  char buf[32];
+  if (t >= 3600)
+    std::snprintf(buf, sizeof buf, "%ldh%02ldm", t / 3600, (t % 3600) / 60);
+  else if (t >= 60)
+    std::snprintf(buf, sizeof buf, "%ldm%02lds", t / 60, t % 60);
+  else
+    std::snprintf(buf, sizeof buf, "%lds", t);
+  return buf;
+}
+
+}  // namespace
+
+std::string num(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+Progress::Progress(bool quiet, double start_fraction)
+    : enabled_(!quiet), tty_(isatty(STDERR_FILENO) == 1), start_(Clock::now()), f0_(start_fraction) {
+  next_decile_ = std::floor(start_fraction * 10) + 1;
+}
+
+void Progress::update(double f, const std::string& where, int step) {
+  if (!enabled_) return;
+  const auto now = Clock::now();
+  const double elapsed = seconds(now - start_);
+  const double left = f > f0_ ? elapsed * (1 - f) / (f - f0_) : NAN;
+  if (tty_) {
+    if (seconds(now - last_draw_) < 0.2 && f < 1) return;
+    last_draw_ = now;
+    const int width = 30, filled = static_cast<int>(f * width);
+    std::string bar(static_cast<std::size_t>(filled), '#');
+    bar.resize(width, '-');
+    std::fprintf(stderr, "\rDF [%s] %3d%%  %s  step %d  %s left   ", bar.c_str(), static_cast<int>(f * 100),
+                 where.c_str(), step, duration(left).c_str());
+    std::fflush(stderr);
+    drawn_ = true;
+  } else if (f * 10 >= next_decile_) {
+    next_decile_ = std::floor(f * 10) + 1;
+    if (elapsed < 1.0) return;
+    std::fprintf(stderr, "DF: %3d%%  %s  step %d  %s elapsed, about %s left\n", static_cast<int>(f * 100),
+                 where.c_str(), step, duration(elapsed).c_str(), duration(left).c_str());
+  }
+}
+
+void Progress::finish() {
+  if (drawn_) std::fprintf(stderr, "\n");
+  drawn_ = false;
+}
+
+std::string progress_where(double time, double total_time, int step, int steps) {
+  if (total_time > 0) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.3g", time);
+    return "t = " + std::string(buf) + "/" + num(total_time) + " s";
+  }
+  return "step " + std::to_string(step) + "/" + std::to_string(steps);
+}
+
+InterruptGuard::InterruptGuard() {
+  g_interrupted = 0;
+  old_int_ = std::signal(SIGINT, on_interrupt);
+  old_term_ = std::signal(SIGTERM, on_interrupt);
+}
+
+InterruptGuard::~InterruptGuard() {
+  std::signal(SIGINT, old_int_);
+  std::signal(SIGTERM, old_term_);
+}
+
+const volatile std::sig_atomic_t* InterruptGuard::flag() const { return &g_interrupted; }
+
+std::string frame_name(const char* kind, std::size_t frame) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "df_%s_%05zu.vtu", kind, frame);
+  return buf;
+}
+
+void write_pvd_series(const std::filesystem::path& dir, const std::vector<double>& times, bool contacts) {
+  std::vector<PvdEntry> entries;
+  for (std::size_t f = 0; f < times.size(); ++f) {
+    entries.push_back({frame_name("blocks", f), times[f], 0, "blocks"});
+    if (contacts) entries.push_back({frame_name("contacts", f), times[f], 1, "contacts"});
+  }
+  write_pvd((dir / "df.pvd").string(), entries);
+}
+
+void throw_runaway(const df::RunawayError& e, const std::string& results_path) {
+  std::string sentence = e.what();
+  if (!sentence.empty() && sentence.back() == '.') sentence.pop_back();
+  throw InputError(sentence + "; " + results_path + " holds the run up to the step before.");
+}
+
+void report_run_end(df::RunEnd end, const std::string& summary, const DfStage& stage) {
+  if (end == df::RunEnd::Interrupted) {
+    std::cerr << "dda: interrupted after " << summary << "; " << stage.results_path
+              << " holds the run so far (continue with `dda df --resume " << stage.results_path << "`).\n";
+    std::exit(130);
+  }
+  if (end == df::RunEnd::Stopped)
+    say(stage.quiet, "DF: stopped after " + summary + "; continue with `dda df --resume " + stage.results_path +
+                         "`\n");
+  else
+    say(stage.quiet, "DF: " + summary + " written to " + stage.results_path + "\n");
+}
+
+}  // namespace dda::cli
