@@ -15,6 +15,8 @@ namespace dda::df3 {
 namespace {
 
 using df::h5io::flat;
+using df::h5io::series_times;
+using df::h5io::write_points;
 using df::h5io::length;
 using df::h5io::read_f64;
 using df::h5io::read_i64;
@@ -40,7 +42,6 @@ std::vector<double> flat12(const std::vector<Vector12d>& v) {
 void write_series(h5::Writer& w, const Simulation3& sim) {
   const auto& hs = sim.histories();
   {
-    h5::Id g = w.group("points");
     std::vector<std::string> names;
     std::vector<std::int32_t> blocks;
     std::vector<Vec3> initial;
@@ -49,21 +50,13 @@ void write_series(h5::Writer& w, const Simulation3& sim) {
       blocks.push_back(p.block);
       initial.push_back(p.position);
     }
-    w.strings(g.get(), "name", names, "", "measurement point names, in the order of the /series columns");
-    w.i32(g.get(), "block", blocks, "", "block each point rides with");
-    w.f64(g.get(), "initial", flat(initial), {initial.size(), 3}, "m", "position at the start of the run");
+    write_points(w, names, blocks, flat(initial), 3);
   }
   h5::Id g = w.group("series");
   w.attr_text(g.get(), "description",
               "measurement point time series: sample 0 is the start of the run, then one sample per step");
   const std::size_t np = hs.size();
-  std::vector<double> time;
-  if (np > 0) {
-    for (const MeasurementSample3& m : hs[0]) time.push_back(m.time);
-  } else {
-    time.push_back(sim.log().empty() ? sim.time() : sim.log().front().time - sim.log().front().dt);
-    for (const StepInfo3& s : sim.log()) time.push_back(s.time);
-  }
+  const std::vector<double> time = series_times(hs, sim.log(), sim.time());
   const std::size_t ns = time.size();
   std::vector<Vec3> pos, disp, vel;
   std::vector<Vector6d> stress;

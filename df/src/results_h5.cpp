@@ -17,6 +17,8 @@ constexpr const char* kUnits =
     "SI: lengths m, time s, velocity m/s, rotation rad, stress Pa, force N and energy J per unit thickness";
 
 using h5io::flat;
+using h5io::series_times;
+using h5io::write_points;
 using h5io::length;
 
 void write_model(h5::Writer& w, const Results& r, const Model& model) {
@@ -87,7 +89,6 @@ void write_series(h5::Writer& w, const Simulation& sim) {
   const auto& hs = sim.histories();
   const Model& model = sim.model();
   {
-    h5::Id g = w.group("points");
     std::vector<std::string> names;
     std::vector<std::int32_t> blocks;
     std::vector<Vec2> initial;
@@ -96,21 +97,13 @@ void write_series(h5::Writer& w, const Simulation& sim) {
       blocks.push_back(p.block);
       initial.push_back(p.position);
     }
-    w.strings(g.get(), "name", names, "", "measurement point names, in the order of the /series columns");
-    w.i32(g.get(), "block", blocks, "", "block each point rides with");
-    w.f64(g.get(), "initial", flat(initial), {initial.size(), 2}, "m", "position at the start of the run");
+    write_points(w, names, blocks, flat(initial), 2);
   }
   h5::Id g = w.group("series");
   w.attr_text(g.get(), "description",
               "measurement point time series: sample 0 is the start of the run, then one sample per step");
   const std::size_t np = hs.size();
-  std::vector<double> time;
-  if (np > 0) {
-    for (const MeasurementSample& m : hs[0]) time.push_back(m.time);
-  } else {
-    time.push_back(sim.log().empty() ? sim.time() : sim.log().front().time - sim.log().front().dt);
-    for (const StepRecord& s : sim.log()) time.push_back(s.time);
-  }
+  const std::vector<double> time = series_times(hs, sim.log(), sim.time());
   const std::size_t ns = time.size();
   std::vector<double> pos, disp, vel, acc, stress;
   pos.reserve(ns * np * 2);

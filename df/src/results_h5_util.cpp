@@ -98,4 +98,12 @@ std::size_t rows_of(const h5::Reader& r, const std::string& name) {
   return a.dims.empty() ? 0 : a.dims[0];
 }
 
+void write_points(h5::Writer& w, const std::vector<std::string>& names, const std::vector<std::int32_t>& blocks,
+                  const std::vector<double>& initial, hsize_t dim) {
+  h5::Id g = w.group("points");
+  w.strings(g.get(), "name", names, "", "measurement point names, in the order of the /series columns");
+  w.i32(g.get(), "block", blocks, "", "block each point rides with");
+  w.f64(g.get(), "initial", initial, {names.size(), dim}, "m", "position at the start of the run");
+}
+
 }  // namespace dda::df::h5io

@@ -20,6 +20,25 @@ constexpr int kResultsFormatVersion = 1;
 std::vector<double> flat(const std::vector<Vec2>& v);
 std::vector<double> flat(const std::vector<Vec3>& v);
 
+// /points: name, block and initial position ((n, dim) flat rows) of every
+// measurement point, in the order of the /series columns.
+void write_points(h5::Writer& w, const std::vector<std::string>& names, const std::vector<std::int32_t>& blocks,
+                  const std::vector<double>& initial, hsize_t dim);
+
+// The times of the /series samples: those of the first point's history, or
+// with no points the start and the end of every step of the log.
+template <class Histories, class Log>
+std::vector<double> series_times(const Histories& histories, const Log& log, double now) {
+  std::vector<double> time;
+  if (!histories.empty()) {
+    for (const auto& m : histories[0]) time.push_back(m.time);
+  } else {
+    time.push_back(log.empty() ? now : log.front().time - log.front().dt);
+    for (const auto& s : log) time.push_back(s.time);
+  }
+  return time;
+}
+
 // A group below `parent`.
 h5::Id subgroup(hid_t parent, const std::string& name);
 

@@ -53,48 +53,11 @@ struct Job {
 void execute(Job& job, const DfStage& stage, std::optional<df::SimulationState> resume_from) {
   df::Simulation sim(df::build_model(job.scenario.input));
   if (resume_from) sim.restore(*resume_from);
-
-  df::RunControl rc;
-  rc.checkpoint_seconds = job.output.checkpoint_seconds;
-  rc.checkpoint_steps = job.output.checkpoint_steps;
-  rc.stop_at_step = stage.stop_at_step;
-  const fs::path vtk(stage.vtk_dir);
-  if (!stage.vtk_dir.empty()) {
-    make_dir(vtk);
-    const bool contacts = job.output.vtk_contacts;
-    rc.on_frame = [&job, vtk, contacts](const df::Simulation& s, std::size_t frame) {
-      df::write_blocks_frame_vtu((vtk / frame_name("blocks", frame)).string(), s);
-      if (contacts) df::write_contacts_vtu((vtk / frame_name("contacts", frame)).string(), s);
-      std::vector<double> times;
-      for (const df::Frame& f : job.results.frames) times.push_back(f.time);
-      write_pvd_series(vtk, times, contacts);
-    };
-  }
-  Progress progress(stage.quiet, df::run_progress(sim));
-  rc.on_step = [&progress](const df::Simulation& s) {
-    const int step = s.log().empty() ? 0 : s.log().back().step;
-    const df::Control& c = s.model().control;
-    progress.update(df::run_progress(s), progress_where(s.time(), c.total_time, step, c.steps), step);
-  };
-  df::RunEnd end;
-  {
-    InterruptGuard guard;
-    rc.interrupted = guard.flag();
-    try {
-      end = df::run_recorded(sim, job.results, stage.results_path, rc);
-    } catch (const df::RunawayError& e) {
-      progress.finish();
-      throw_runaway(e, stage.results_path);
-    }
-  }
-  progress.finish();
-
-  int sliding = 0, locked = 0;
-  if (!sim.log().empty()) sliding = sim.log().back().sliding, locked = sim.log().back().locked;
-  report_run_end(end, std::to_string(sim.log().size()) + " steps to t = " + num(sim.time()) + " s (" +
-                          std::to_string(sliding) + " sliding and " + std::to_string(locked) +
-                          " locked contacts at the end)",
-                 stage);
+  run_session(sim, job.results, job.output, stage,
+              [](const df::Simulation& s, const std::string& blocks, const std::string& contacts) {
+                df::write_blocks_frame_vtu(blocks, s);
+                if (!contacts.empty()) df::write_contacts_vtu(contacts, s);
+              });
 }
 
 Job job_from_scenario(const YamlNode& root, const BlockModel& blocks, const std::string& blocks_path) {

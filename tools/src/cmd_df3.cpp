@@ -43,48 +43,11 @@ Job3 job_from_scenario3(const YamlNode& root, const PolyhedronModel& blocks, con
 void execute3(Job3& job, const DfStage& stage, const std::optional<df3::Simulation3State>& resume_from) {
   df3::Simulation3 sim(job.scenario.model);
   if (resume_from) sim.restore(*resume_from);
-
-  df3::RunControl3 rc;
-  rc.checkpoint_seconds = job.output.checkpoint_seconds;
-  rc.checkpoint_steps = job.output.checkpoint_steps;
-  rc.stop_at_step = stage.stop_at_step;
-  const fs::path vtk(stage.vtk_dir);
-  if (!stage.vtk_dir.empty()) {
-    make_dir(vtk);
-    const bool contacts = job.output.vtk_contacts;
-    rc.on_frame = [&job, vtk, contacts](const df3::Simulation3& s, std::size_t frame) {
-      df3::write_blocks3_frame_vtu((vtk / frame_name("blocks", frame)).string(), s, job.results.blocks.blocks);
-      if (contacts) df3::write_contacts3_vtu((vtk / frame_name("contacts", frame)).string(), s);
-      std::vector<double> times;
-      for (const df3::Frame3& f : job.results.frames) times.push_back(f.time);
-      write_pvd_series(vtk, times, contacts);
-    };
-  }
-  Progress progress(stage.quiet, df3::run_progress(sim));
-  rc.on_step = [&progress](const df3::Simulation3& s) {
-    const int step = df3::last_step(s);
-    const df3::Control3& c = s.model().control;
-    progress.update(df3::run_progress(s), progress_where(s.time(), c.total_time, step, c.steps), step);
-  };
-  df::RunEnd end;
-  {
-    InterruptGuard guard;
-    rc.interrupted = guard.flag();
-    try {
-      end = df3::run_recorded(sim, job.results, stage.results_path, rc);
-    } catch (const df::RunawayError& e) {
-      progress.finish();
-      throw_runaway(e, stage.results_path);
-    }
-  }
-  progress.finish();
-
-  int sliding = 0, locked = 0;
-  if (!sim.log().empty()) sliding = sim.log().back().sliding, locked = sim.log().back().locked;
-  report_run_end(end, std::to_string(sim.log().size()) + " steps to t = " + num(sim.time()) + " s (" +
-                          std::to_string(sliding) + " sliding and " + std::to_string(locked) +
-                          " locked contacts at the end)",
-                 stage);
+  run_session(sim, job.results, job.output, stage,
+              [&job](const df3::Simulation3& s, const std::string& blocks, const std::string& contacts) {
+                df3::write_blocks3_frame_vtu(blocks, s, job.results.blocks.blocks);
+                if (!contacts.empty()) df3::write_contacts3_vtu(contacts, s);
+              });
 }
 
 }  // namespace

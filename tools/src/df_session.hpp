@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "pipeline.hpp"
 #include "dda/df/run_loop.hpp"
 #include "dda/df/runaway.hpp"
 
@@ -66,5 +67,56 @@ void report_run_end(df::RunEnd end, const std::string& summary, const DfStage& s
 
 // A number in its shortest usual form.
 std::string num(double v);
+
+// A prepared forward run, 2D or 3D alike, with everything `dda df` does
+// around it: checkpoints on the output options' schedule, a ParaView frame
+// (write_frame(sim, blocks_file, contacts_file or "")) at every saved frame,
+// the progress bar, a clean stop on Ctrl-C, the runaway sentence and the
+// closing one. The dimension's run_recorded and run_progress are found by
+// argument-dependent lookup (df:: for Simulation, df3:: for Simulation3).
+template <class Sim, class Results, class WriteFrame>
+void run_session(Sim& sim, Results& results, const OutputOptions& output, const DfStage& stage,
+                 WriteFrame write_frame) {
+  df::BasicRunControl<Sim> rc;
+  rc.checkpoint_seconds = output.checkpoint_seconds;
+  rc.checkpoint_steps = output.checkpoint_steps;
+  rc.stop_at_step = stage.stop_at_step;
+  const std::filesystem::path vtk(stage.vtk_dir);
+  if (!stage.vtk_dir.empty()) {
+    make_dir(vtk);
+    const bool contacts = output.vtk_contacts;
+    rc.on_frame = [&results, vtk, contacts, write_frame](const Sim& s, std::size_t frame) {
+      write_frame(s, (vtk / frame_name("blocks", frame)).string(),
+                  contacts ? (vtk / frame_name("contacts", frame)).string() : std::string());
+      std::vector<double> times;
+      for (const auto& f : results.frames) times.push_back(f.time);
+      write_pvd_series(vtk, times, contacts);
+    };
+  }
+  Progress progress(stage.quiet, run_progress(sim));
+  rc.on_step = [&progress](const Sim& s) {
+    const int step = s.log().empty() ? 0 : s.log().back().step;
+    const auto& c = s.model().control;
+    progress.update(run_progress(s), progress_where(s.time(), c.total_time, step, c.steps), step);
+  };
+  df::RunEnd end;
+  {
+    InterruptGuard guard;
+    rc.interrupted = guard.flag();
+    try {
+      end = run_recorded(sim, results, stage.results_path, rc);
+    } catch (const df::RunawayError& e) {
+      progress.finish();
+      throw_runaway(e, stage.results_path);
+    }
+  }
+  progress.finish();
+  int sliding = 0, locked = 0;
+  if (!sim.log().empty()) sliding = sim.log().back().sliding, locked = sim.log().back().locked;
+  report_run_end(end,
+                 std::to_string(sim.log().size()) + " steps to t = " + num(sim.time()) + " s (" +
+                     std::to_string(sliding) + " sliding and " + std::to_string(locked) + " locked contacts at the end)",
+                 stage);
+}
 
 }  // namespace dda::cli
