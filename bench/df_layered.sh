@@ -11,6 +11,7 @@
 # growth exponent of the cost per step between sizes.
 #
 #   bash bench/df_layered.sh [STEPS]          # default 30
+#   BUILD=/path/to/build bash bench/df_layered.sh   # another build directory (default build)
 #
 # The same bench_df times any model `dda df` runs, e.g. a DDA-for-Windows
 # pair: dda dl model.geo -o l.h5 && dda dc l.h5 -o b.h5 &&
@@ -18,7 +19,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 steps="${1:-30}"
-[ -x build/bench/bench_df ] && [ -x build/bin/dda ] || bash scripts/build.sh
+build="${BUILD:-build}"
+[ -x "$build/bench/bench_df" ] && [ -x "$build/bin/dda" ] || bash scripts/build.sh
 work="${TMPDIR:-/tmp}/dda_bench_layered"
 rm -rf "$work" && mkdir -p "$work"
 printf '%-7s %8s %9s %7s %12s %11s %13s %10s\n' size blocks contacts solves ms_per_step search_pct assembly_pct solve_pct
@@ -34,9 +36,9 @@ for size in "41 27" "130 85" "290 190"; do
       -e "s/^points:/points:\n  - {name: crown, kind: measurement, at: [$((w / 2)).1, $((h / 3 + 3)).6]}/" \
       -e "s/^  max_displacement_ratio: .*/  max_displacement_ratio: 0.0005\n  w0: 20/" \
       examples/tunnel_roof/tunnel_roof.yaml > "$work/$name.yaml"
-  build/bin/dda dl "$work/$name.yaml" -o "$work/$name.lines.h5" -q
-  build/bin/dda dc "$work/$name.lines.h5" -o "$work/$name.blocks.h5" -q
-  build/bench/bench_df --blocks "$work/$name.blocks.h5" --scenario "$work/$name.yaml" --steps "$steps" \
+  "$build/bin/dda" dl "$work/$name.yaml" -o "$work/$name.lines.h5" -q
+  "$build/bin/dda" dc "$work/$name.lines.h5" -o "$work/$name.blocks.h5" -q
+  "$build/bench/bench_df" --blocks "$work/$name.blocks.h5" --scenario "$work/$name.yaml" --steps "$steps" \
       --benchmark_filter=BM_Model --benchmark_format=json > "$work/$name.json" 2> "$work/$name.log"
   line=$(/usr/bin/python3 - "$work/$name.json" <<'PY'
 import json, sys

@@ -69,11 +69,23 @@ double tributary_length(const Polygon2& vi, int vertex, const Vec2& edge_tangent
 
 namespace {
 
-// Adds the penalty energy p/2 (s0 + a.di + b.dj)^2 of one spring.
-void add_spring(BlockSystem& sys, int i, int j, double p, double s0, const Vector6d& a, const Vector6d& b) {
-  sys.diagonal(i) += p * a * a.transpose();
-  sys.diagonal(j) += p * b * b.transpose();
-  sys.add_coupling(i, j, p * a * b.transpose());
+// The penalty energy p/2 (s0 + a.di + b.dj)^2 of one spring: its stiffness
+// into K (a negative p takes out one added before), or its force into F.
+// The diagonal blocks get their lower triangle only (all that is read of
+// them, see block_system.hpp).
+void add_spring_matrix(BlockSystem& sys, int i, int j, double p, const Vector6d& a, const Vector6d& b) {
+  const Vector6d pa = p * a, pb = p * b;
+  Matrix6d& di = sys.diagonal(i);
+  Matrix6d& dj = sys.diagonal(j);
+  for (int col = 0; col < kDofs; ++col)
+    for (int row = col; row < kDofs; ++row) {
+      di(row, col) += pa[row] * a[col];
+      dj(row, col) += pb[row] * b[col];
+    }
+  sys.add_coupling(i, j, pa * b.transpose());
+}
+
+void add_spring_force(BlockSystem& sys, int i, int j, double p, double s0, const Vector6d& a, const Vector6d& b) {
   sys.rhs(i) -= p * s0 * a;
   sys.rhs(j) -= p * s0 * b;
 }
@@ -84,12 +96,19 @@ FrictionInput friction_input(const Contact& c, double dt) {
 
 }  // namespace
 
-void add_contact_terms(const Contact& c, const ContactLaw& law, double dt, BlockSystem& sys) {
+void add_contact_springs(const Contact& c, const ContactLaw& law, double weight, BlockSystem& sys) {
   if (c.state == ContactState::Open) return;
   const ContactGeometry& g = c.geo;
-  add_spring(sys, c.vblock, c.eblock, law.pn, g.dn0, g.en, g.gn);
+  add_spring_matrix(sys, c.vblock, c.eblock, weight * law.pn, g.en, g.gn);
+  if (c.state == ContactState::Locked) add_spring_matrix(sys, c.vblock, c.eblock, weight * law.ps, g.es, g.gs);
+}
+
+void add_contact_forces(const Contact& c, const ContactLaw& law, double dt, BlockSystem& sys) {
+  if (c.state == ContactState::Open) return;
+  const ContactGeometry& g = c.geo;
+  add_spring_force(sys, c.vblock, c.eblock, law.pn, g.dn0, g.en, g.gn);
   if (c.state == ContactState::Locked) {
-    add_spring(sys, c.vblock, c.eblock, law.ps, g.ds0, g.es, g.gs);
+    add_spring_force(sys, c.vblock, c.eblock, law.ps, g.ds0, g.es, g.gs);
   } else {
     // Sliding: friction from the normal force of the previous iterate, on P
     // against its slip and the reverse on the edge under P.
@@ -97,6 +116,11 @@ void add_contact_terms(const Contact& c, const ContactLaw& law, double dt, Block
     sys.rhs(c.vblock) -= f * g.es;  // es = T_i(P)^T t
     sys.rhs(c.eblock) -= f * g.gc;  // gc = -T_j(Pc)^T t
   }
+}
+
+void add_contact_terms(const Contact& c, const ContactLaw& law, double dt, BlockSystem& sys) {
+  add_contact_springs(c, law, 1.0, sys);
+  add_contact_forces(c, law, dt, sys);
 }
 
 ContactState update_contact(Contact& c, const ContactLaw& law, double dt, const Vector6d& di, const Vector6d& dj,

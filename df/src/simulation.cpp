@@ -167,7 +167,26 @@ void Simulation::assemble(double dt, const std::vector<Contact>& contacts) {
     add_point_load(l.block, blocks_[l.block], load_pos_[k], load_force(l, time_, time_ + dt), system_);
   }
   assemble_physics(dt);
+  base_rhs_ = system_.rhs();
   system_.scatter([&](int k) { add_contact_terms(contacts[k], law_of(contacts[k]), dt, system_); });
+}
+
+void Simulation::reassemble(double dt, const std::vector<Contact>& contacts,
+                            const std::vector<std::pair<int, Contact>>& before) {
+  // F anew from the terms of the blocks, points and physics kept from the
+  // full assembly, with every contact's forces added in the same order as
+  // there (friction moves with the normal forces on every iterate).
+  system_.reset_rhs(base_rhs_);
+  system_.scatter([&](int k) { add_contact_forces(contacts[k], law_of(contacts[k]), dt, system_); });
+  // K: only the springs of the contacts that changed state differ (from a
+  // few thousand of tens of thousands in the first iterates to none once
+  // only friction is settling); they are swapped serially, in order, so K
+  // does not depend on the thread count.
+  for (const auto& [k, old] : before) {
+    const ContactLaw law = law_of(contacts[k]);
+    add_contact_springs(old, law, -1.0, system_);
+    add_contact_springs(contacts[k], law, 1.0, system_);
+  }
 }
 
 bool Simulation::open_close(double dt, std::vector<Contact>& contacts, Eigen::VectorXd& d, int& iterations) {
@@ -175,10 +194,28 @@ bool Simulation::open_close(double dt, std::vector<Contact>& contacts, Eigen::Ve
   // contact is held (update_contact) so cycles between near-zero-force
   // states end.
   std::vector<std::uint8_t> changes(contacts.size(), 0);
+  // The contacts whose state changed in the last update, as they were
+  // assembled: the next assembly swaps their springs only. A state change
+  // alters the springs through the state, ds0 and gs alone (update_contact).
+  std::vector<std::pair<int, Contact>> before;
+  struct Springs {
+    ContactState state;
+    double ds0;
+    Vector6d gs;
+  };
+  std::vector<Springs> assembled(contacts.size());
+  std::vector<std::uint8_t> moved(contacts.size(), 0);
   for (iterations = 1; iterations <= model_.control.max_open_close; ++iterations) {
     {
       const ScopedTimer timer(timings_.assembly);
-      assemble(dt, contacts);
+      // Swapping a spring costs twice adding it, and runs serially: when many
+      // contacts changed (the first iterate after a blast of new contacts)
+      // the whole system is assembled afresh instead.
+      if (iterations == 1 || 8 * before.size() > contacts.size()) {
+        assemble(dt, contacts);
+      } else {
+        reassemble(dt, contacts, before);
+      }
     }
     {
       const ScopedTimer timer(timings_.solve);
@@ -192,12 +229,24 @@ bool Simulation::open_close(double dt, std::vector<Contact>& contacts, Eigen::Ve
       Contact& c = contacts[k];
       const ContactState old = c.state;
       const int old_sign = c.slip_sign;
+      const Springs springs{old, c.geo.ds0, c.geo.gs};
       c.state = update_contact(c, law_of(c), dt, d.segment<kDofs>(kDofs * c.vblock),
                                d.segment<kDofs>(kDofs * c.eblock), changes[k] >= 2);
       const bool flipped = c.state != old || (c.state == ContactState::Sliding && c.slip_sign != old_sign);
       if (flipped && changes[k] < 255) ++changes[k];
       changed = changed || flipped;
       friction_lags = friction_lags || !c.friction_settled;
+      moved[k] = c.state != old;
+      if (moved[k]) assembled[k] = springs;
+    }
+    before.clear();
+    for (std::size_t k = 0; k < contacts.size(); ++k) {
+      if (!moved[k]) continue;
+      Contact old = contacts[k];
+      old.state = assembled[k].state;
+      old.geo.ds0 = assembled[k].ds0;
+      old.geo.gs = assembled[k].gs;
+      before.emplace_back(static_cast<int>(k), std::move(old));
     }
     // Settled: no contact changed state and the friction of every sliding
     // contact agrees with its normal force. The friction agreement is a

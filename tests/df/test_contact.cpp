@@ -9,9 +9,11 @@
 
 #include "df_test_models.hpp"
 #include "dda/df/block_kinematics.hpp"
+#include "dda/df/block_system.hpp"
 #include "dda/df/broad_phase.hpp"
 #include "dda/df/contact.hpp"
 #include "dda/df/contact_detection.hpp"
+#include "dda/df/friction.hpp"
 
 namespace dda::df {
 namespace {
@@ -62,6 +64,45 @@ TEST(ContactGeometry, LinearisedDistanceMatchesMovedGeometry) {
     EXPECT_GT(std::abs(linear - g.dn0), 1e-5);  // the increments do change dn
     EXPECT_NEAR(g.dn0, 0.0005, 1e-15);
   }
+}
+
+TEST(ContactTerms, SpringsAndForcesAddUpAndSpringsComeOutAgain) {
+  // The open-close iteration assembles a contact's springs and forces in
+  // two parts, and swaps the springs of a contact that changed state by
+  // taking out the old ones (weight -1): the system must come out as if
+  // assembled afresh, to rounding.
+  const Polygon2 base = rectangle(-1, -1, 3, 1), top = rectangle(0.2, -0.0005, 1, 0.5);
+  Contact c;
+  c.vblock = 1;
+  c.vertex = 0;
+  c.eblock = 0;
+  c.edge = 2;
+  c.geo = contact_geometry(top, block_geometry(top).centroid, base, block_geometry(base).centroid, 0, 2, 0.4);
+  c.state = ContactState::Locked;
+  const auto friction = make_friction_law(JointProperties{});
+  const ContactLaw law{1e9, 4e8, 0, friction.get(), 1e-9};
+  auto system = [] {
+    BlockSystem sys;
+    sys.reset(2, {{1, 0}});
+    for (int i = 0; i < 2; ++i) sys.diagonal(i) = 1e6 * Matrix6d::Identity();
+    return sys;
+  };
+  BlockSystem whole = system(), parts = system(), swapped = system();
+  add_contact_terms(c, law, 1e-3, whole);
+  add_contact_springs(c, law, 1.0, parts);
+  add_contact_forces(c, law, 1e-3, parts);
+  EXPECT_EQ(Eigen::MatrixXd(whole.full()), Eigen::MatrixXd(parts.full()));
+  EXPECT_EQ(whole.rhs(), parts.rhs());
+  // Locked, then sliding: out with the locked springs, in with the sliding one.
+  add_contact_springs(c, law, 1.0, swapped);
+  add_contact_springs(c, law, -1.0, swapped);
+  c.state = ContactState::Sliding;
+  add_contact_springs(c, law, 1.0, swapped);
+  BlockSystem fresh = system();
+  add_contact_springs(c, law, 1.0, fresh);
+  const Eigen::MatrixXd k = Eigen::MatrixXd(fresh.full());
+  EXPECT_LE((Eigen::MatrixXd(swapped.full()) - k).norm(), 1e-14 * k.norm());
+  EXPECT_GT((Eigen::MatrixXd(whole.full()) - k).norm(), 1e-3 * k.norm());  // the shear spring did count
 }
 
 TEST(EntranceEdge, VertexEntersThroughTopEdge) {

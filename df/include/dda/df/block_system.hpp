@@ -1,10 +1,12 @@
 #pragma once
 // The global system K d = F stored as 6x6 blocks.
 //
-// Only the lower block triangle is kept (K is symmetric). Every stored block
-// is written out whole, zeros included, so the sparsity pattern depends only
-// on which block pairs are coupled: the solver can reuse its symbolic
-// analysis while the contact pairs stay the same.
+// Only the lower block triangle is kept (K is symmetric), and of each
+// diagonal block only its lower triangle is read (writers may skip the
+// upper one). Every stored block is written out whole, zeros included, so
+// the sparsity pattern depends only on which block pairs are coupled: the
+// solver can reuse its symbolic analysis while the contact pairs stay the
+// same.
 //
 // Pattern. reset(blocks, items) declares the couplings of a step up front:
 // item k (a contact) couples blocks items[k].first and items[k].second. The
@@ -67,6 +69,8 @@ class BlockSystem {
   // declared pairs written by one thread at a time (see scatter).
   void add_coupling(int i, int j, const Matrix6d& kij);
   auto rhs(int i) { return rhs_.segment<kDofs>(kDofs * i); }
+  // Keeps K and the items; the right-hand side becomes `rhs`.
+  void reset_rhs(const Eigen::VectorXd& rhs) { rhs_ = rhs; }
   const Eigen::VectorXd& rhs() const { return rhs_; }
 
   // Calls f(k) for every item of the last reset(blocks, items), in parallel

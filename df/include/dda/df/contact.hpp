@@ -88,7 +88,11 @@ struct ContactLaw {
 };
 
 // Springs and friction forces of the contact in its current state.
+// They are the sum of two parts: `weight` times the springs (K only; weight
+// -1 takes out springs added before), and the forces (F only).
 void add_contact_terms(const Contact& c, const ContactLaw& law, double dt, BlockSystem& sys);
+void add_contact_springs(const Contact& c, const ContactLaw& law, double weight, BlockSystem& sys);
+void add_contact_forces(const Contact& c, const ContactLaw& law, double dt, BlockSystem& sys);
 
 // State after a solve with increments di, dj (the state the next iterate
 // assumes). Updates the forces of the contact and the bond; returns the new

@@ -135,6 +135,10 @@ class Simulation {
   void detect_contacts();
   int joint_of(int vblock, int vertex, int eblock, int edge) const;
   void assemble(double dt, const std::vector<Contact>& contacts);
+  // The system of the next open-close iterate from the last one: `before`
+  // holds the contacts whose state changed since, as they were assembled
+  // (index, contact).
+  void reassemble(double dt, const std::vector<Contact>& contacts, const std::vector<std::pair<int, Contact>>& before);
   bool open_close(double dt, std::vector<Contact>& contacts, Eigen::VectorXd& d, int& iterations);
   void accept(double dt, const Eigen::VectorXd& d, std::vector<Contact>& contacts, StepRecord& rec);
   void record_measurements();
@@ -164,6 +168,7 @@ class Simulation {
   std::vector<StepRecord> log_;
   std::vector<std::vector<MeasurementSample>> histories_;
   BlockSystem system_;
+  Eigen::VectorXd base_rhs_;  // F of the last assemble() without its contact terms
   StepTimings timings_;
   double time_ = 0;
   double dt_ = 0;
