@@ -79,30 +79,7 @@ void write_series(h5::Writer& w, const Simulation3& sim) {
 void write_steps(h5::Writer& w, const std::vector<StepInfo3>& log) {
   h5::Id g = w.group("steps");
   w.attr_text(g.get(), "description", "one row per accepted step");
-  auto ints = [&log](auto get) {
-    std::vector<std::int32_t> v;
-    for (const StepInfo3& r : log) v.push_back(static_cast<std::int32_t>(get(r)));
-    return v;
-  };
-  auto reals = [&log](auto get) {
-    std::vector<double> v;
-    for (const StepInfo3& r : log) v.push_back(get(r));
-    return v;
-  };
-  const std::vector<hsize_t> n{log.size()};
-  w.i32(g.get(), "step", ints([](const StepInfo3& r) { return r.step; }), "", "step number (1, 2, ...)");
-  w.f64(g.get(), "time", reals([](const StepInfo3& r) { return r.time; }), n, "s", "time at the end of the step");
-  w.f64(g.get(), "dt", reals([](const StepInfo3& r) { return r.dt; }), n, "s", "time step taken");
-  w.i32(g.get(), "iterations", ints([](const StepInfo3& r) { return r.iterations; }), "",
-        "open-close iterations of the accepted attempt");
-  w.i32(g.get(), "dt_cuts", ints([](const StepInfo3& r) { return r.dt_cuts; }), "", "attempts redone with a smaller dt");
-  w.i32(g.get(), "converged", ints([](const StepInfo3& r) { return r.converged ? 1 : 0; }), "",
-        "0: accepted at the smallest dt without the contact states settling");
-  w.i32(g.get(), "open", ints([](const StepInfo3& r) { return r.open; }), "", "open contacts");
-  w.i32(g.get(), "sliding", ints([](const StepInfo3& r) { return r.sliding; }), "", "sliding contacts");
-  w.i32(g.get(), "locked", ints([](const StepInfo3& r) { return r.locked; }), "", "locked contacts");
-  w.f64(g.get(), "max_displacement", reals([](const StepInfo3& r) { return r.max_displacement; }), n, "m",
-        "largest vertex displacement of the step");
+  df::h5io::write_step_columns(w, g.get(), log, [](const StepInfo3& r) { return r.iterations; });
 }
 
 void write_frames(h5::Writer& w, const std::vector<Frame3>& frames, std::size_t nv, std::size_t nb) {

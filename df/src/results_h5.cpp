@@ -128,12 +128,7 @@ void write_series(h5::Writer& w, const Simulation& sim) {
 void write_steps(h5::Writer& w, const std::vector<StepRecord>& log) {
   h5::Id g = w.group("steps");
   w.attr_text(g.get(), "description", "one row per accepted step");
-  auto ints = [&log](auto get) {
-    std::vector<std::int32_t> v;
-    v.reserve(log.size());
-    for (const StepRecord& r : log) v.push_back(static_cast<std::int32_t>(get(r)));
-    return v;
-  };
+  h5io::write_step_columns(w, g.get(), log, [](const StepRecord& r) { return r.open_close_iterations; });
   auto reals = [&log](auto get) {
     std::vector<double> v;
     v.reserve(log.size());
@@ -141,19 +136,6 @@ void write_steps(h5::Writer& w, const std::vector<StepRecord>& log) {
     return v;
   };
   const std::vector<hsize_t> n{log.size()};
-  w.i32(g.get(), "step", ints([](const StepRecord& r) { return r.step; }), "", "step number (1, 2, ...)");
-  w.f64(g.get(), "time", reals([](const StepRecord& r) { return r.time; }), n, "s", "time at the end of the step");
-  w.f64(g.get(), "dt", reals([](const StepRecord& r) { return r.dt; }), n, "s", "time step taken");
-  w.i32(g.get(), "iterations", ints([](const StepRecord& r) { return r.open_close_iterations; }), "",
-        "open-close iterations of the accepted attempt");
-  w.i32(g.get(), "dt_cuts", ints([](const StepRecord& r) { return r.dt_cuts; }), "", "attempts redone with a smaller dt");
-  w.i32(g.get(), "converged", ints([](const StepRecord& r) { return r.converged ? 1 : 0; }), "",
-        "0: accepted at the smallest dt without the contact states settling");
-  w.i32(g.get(), "open", ints([](const StepRecord& r) { return r.open; }), "", "open contacts");
-  w.i32(g.get(), "sliding", ints([](const StepRecord& r) { return r.sliding; }), "", "sliding contacts");
-  w.i32(g.get(), "locked", ints([](const StepRecord& r) { return r.locked; }), "", "locked contacts");
-  w.f64(g.get(), "max_displacement", reals([](const StepRecord& r) { return r.max_displacement; }), n, "m",
-        "largest vertex displacement of the step");
   w.f64(g.get(), "kinetic_energy", reals([](const StepRecord& r) { return r.kinetic_energy; }), n, "J",
         "kinetic energy at the end of the step (per unit thickness)");
   w.f64(g.get(), "elastic_energy", reals([](const StepRecord& r) { return r.elastic_energy; }), n, "J",

@@ -39,6 +39,38 @@ std::vector<double> series_times(const Histories& histories, const Log& log, dou
   return time;
 }
 
+// The step-log columns both dimensions have (step, time, dt, iterations,
+// dt_cuts, converged, open, sliding, locked, max_displacement) into group g;
+// `iterations` reads the open-close count of a record.
+template <class Record, class Iterations>
+void write_step_columns(h5::Writer& w, hid_t g, const std::vector<Record>& log, Iterations iterations) {
+  auto ints = [&log](auto get) {
+    std::vector<std::int32_t> v;
+    v.reserve(log.size());
+    for (const Record& r : log) v.push_back(static_cast<std::int32_t>(get(r)));
+    return v;
+  };
+  auto reals = [&log](auto get) {
+    std::vector<double> v;
+    v.reserve(log.size());
+    for (const Record& r : log) v.push_back(get(r));
+    return v;
+  };
+  const std::vector<hsize_t> n{log.size()};
+  w.i32(g, "step", ints([](const Record& r) { return r.step; }), "", "step number (1, 2, ...)");
+  w.f64(g, "time", reals([](const Record& r) { return r.time; }), n, "s", "time at the end of the step");
+  w.f64(g, "dt", reals([](const Record& r) { return r.dt; }), n, "s", "time step taken");
+  w.i32(g, "iterations", ints(iterations), "", "open-close iterations of the accepted attempt");
+  w.i32(g, "dt_cuts", ints([](const Record& r) { return r.dt_cuts; }), "", "attempts redone with a smaller dt");
+  w.i32(g, "converged", ints([](const Record& r) { return r.converged ? 1 : 0; }), "",
+        "0: accepted at the smallest dt without the contact states settling");
+  w.i32(g, "open", ints([](const Record& r) { return r.open; }), "", "open contacts");
+  w.i32(g, "sliding", ints([](const Record& r) { return r.sliding; }), "", "sliding contacts");
+  w.i32(g, "locked", ints([](const Record& r) { return r.locked; }), "", "locked contacts");
+  w.f64(g, "max_displacement", reals([](const Record& r) { return r.max_displacement; }), n, "m",
+        "largest vertex displacement of the step");
+}
+
 // A group below `parent`.
 h5::Id subgroup(hid_t parent, const std::string& name);
 

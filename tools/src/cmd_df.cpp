@@ -117,15 +117,8 @@ void resume(const std::string& path, DfStage stage) {
   } catch (const InputError& e) {
     throw InputError(path + ": the scenario stored in the file no longer reads: " + e.what());
   }
-  // What was saved wins: the schedule and solver the run started with.
-  job.results.source = src;
-  job.results.output = saved.output;
-  job.results.frames = std::move(saved.frames);
-  if (!stage.vtk_dir.empty() && !job.results.frames.empty())
-    say(stage.quiet, "DF: resuming at frame " + std::to_string(job.results.frames.size()) +
-                         "; earlier ParaView frames are expected in " + stage.vtk_dir + "\n");
-  say(stage.quiet, "DF: resuming " + path + " at step " + std::to_string(saved.log.size()) + ", t = " +
-                       num(saved.checkpoint->time) + " s\n");
+  // What was saved wins: the schedule (and solver) the run started with.
+  adopt_saved(job.results, saved, path, stage);
   execute(job, stage, std::move(saved.checkpoint));
 }
 

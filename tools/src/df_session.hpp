@@ -68,6 +68,21 @@ void report_run_end(df::RunEnd end, const std::string& summary, const DfStage& s
 // A number in its shortest usual form.
 std::string num(double v);
 
+// A resumed run keeps what its results file saved: where it came from, the
+// output schedule it started with and the frames so far; says where it
+// resumes. `saved` is a Results (2D) or Results3 read back with its state.
+template <class Results>
+void adopt_saved(Results& results, Results& saved, const std::string& path, const DfStage& stage) {
+  results.source = saved.source;
+  results.output = saved.output;
+  results.frames = std::move(saved.frames);
+  if (!stage.vtk_dir.empty() && !results.frames.empty())
+    say(stage.quiet, "DF: resuming at frame " + std::to_string(results.frames.size()) +
+                         "; earlier ParaView frames are expected in " + stage.vtk_dir + "\n");
+  say(stage.quiet, "DF: resuming " + path + " at step " + std::to_string(saved.log.size()) + ", t = " +
+                       num(saved.checkpoint->time) + " s\n");
+}
+
 // A prepared forward run, 2D or 3D alike, with everything `dda df` does
 // around it: checkpoints on the output options' schedule, a ParaView frame
 // (write_frame(sim, blocks_file, contacts_file or "")) at every saved frame,
