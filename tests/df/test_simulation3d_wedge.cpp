@@ -226,6 +226,31 @@ TEST(Simulation3Wedge, SlidesAlongTheLineOfIntersectionV4) {
   EXPECT_EQ(r.unconverged, 0);
 }
 
+// Friction per joint set: the faces on A and B carry their sets (0, 1), so
+// joints given for them override the default (45 deg here, which would
+// hold the wedge): with phi = 10 on both sets it slides as V4 at phi = 10;
+// with phi = 10 on A only, the friction on B is the default and it holds
+// (FS with 10 and 45: (N_A tan 10 + N_B tan 45) / (W sin psi) = 1.59).
+TEST(Simulation3Wedge, FrictionComesFromTheJointSetOfTheFaces) {
+  const double t = 0.5, expected = 0.5 * 2.3731 * t * t;  // CASES.md V4, phi = 10
+  WedgeModel w = build(45, kPenalty, Layout::SharedCorners);
+  df::JointProperties ten;
+  ten.friction_deg = 10;
+  w.model.joint_sets = {ten, ten};
+  WedgeResult r = run(w, 1e-3, t);
+  print("V4 sets A, B at phi=10, default 45", w, r, expected);
+  EXPECT_NEAR(r.along, expected, 0.02 * expected);
+  // Held: the contacts on A slip a quarter of a millimetre while the load
+  // moves over to B (N_A rises to 0.84 W), then everything locks; sliding
+  // would have gone 0.30 m.
+  w.model.joint_sets = {ten};
+  r = run(w, 1e-3, t);
+  print("V4 set A at phi=10, B default 45", w, r, 0.0);
+  EXPECT_LT(std::abs(r.along), 1e-3);
+  EXPECT_EQ(r.sliding, 0);
+  EXPECT_EQ(r.locked, r.contacts);
+}
+
 // phi = 30 (FS = 1.5663): the wedge holds.
 TEST(Simulation3Wedge, HoldsWithThirtyDegreesV4) {
   const WedgeModel w = build(30, kPenalty);
