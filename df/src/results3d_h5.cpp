@@ -154,26 +154,7 @@ void read_log(const h5::Reader& r, Results3& out) {
 }
 
 void read_frames(const h5::Reader& r, Results3& out) {
-  std::size_t nv = 0;
-  for (const Polyhedron& b : out.blocks.blocks) nv += b.vertices.size();
-  const std::size_t nb = out.blocks.blocks.size();
-  const std::size_t nf = length(r, "/frames/time");
-  const auto step = read_i64(r, "/frames/step", nf);
-  const auto time = read_f64(r, "/frames/time", {nf});
-  const auto verts = read_f64(r, "/frames/vertices", {nf, nv, 3});
-  const auto vel = read_f64(r, "/frames/velocity", {nf, nb, kDofs});
-  const auto stress = read_f64(r, "/frames/stress", {nf, nb, 6});
-  out.frames.resize(nf);
-  for (std::size_t f = 0; f < nf; ++f) {
-    Frame3& fr = out.frames[f];
-    fr.step = static_cast<int>(step[f]);
-    fr.time = time[f];
-    for (std::size_t v = 0; v < nv; ++v) fr.vertices.emplace_back(Eigen::Map<const Vec3>(verts.data() + 3 * (f * nv + v)));
-    for (std::size_t b = 0; b < nb; ++b) {
-      fr.velocity.push_back(Eigen::Map<const Vector12d>(vel.data() + kDofs * (f * nb + b)));
-      fr.stress.push_back(Eigen::Map<const Vector6d>(stress.data() + 6 * (f * nb + b)));
-    }
-  }
+  df::h5io::read_frame_series(r, out.blocks.blocks, out.frames);
 }
 
 }  // namespace

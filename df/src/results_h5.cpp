@@ -383,26 +383,7 @@ void read_bolts(const h5::Reader& r, Results& out) {
 }
 
 void read_frames(const h5::Reader& r, Results& out) {
-  std::size_t nv = 0;
-  for (const Block& b : out.blocks.blocks) nv += b.vertices.size();
-  const std::size_t nb = out.blocks.blocks.size();
-  const std::size_t nf = length(r, "/frames/time");
-  const auto step = i64(r, "/frames/step", nf);
-  const auto time = f64(r, "/frames/time", {nf});
-  const auto verts = f64(r, "/frames/vertices", {nf, nv, 2});
-  const auto vel = f64(r, "/frames/velocity", {nf, nb, kDofs});
-  const auto stress = f64(r, "/frames/stress", {nf, nb, 3});
-  out.frames.resize(nf);
-  for (std::size_t f = 0; f < nf; ++f) {
-    Frame& fr = out.frames[f];
-    fr.step = static_cast<int>(step[f]);
-    fr.time = time[f];
-    for (std::size_t v = 0; v < nv; ++v) fr.vertices.emplace_back(verts[2 * (f * nv + v)], verts[2 * (f * nv + v) + 1]);
-    for (std::size_t b = 0; b < nb; ++b) {
-      fr.velocity.push_back(Eigen::Map<const Vector6d>(vel.data() + kDofs * (f * nb + b)));
-      fr.stress.push_back(Eigen::Map<const Vector3d>(stress.data() + 3 * (f * nb + b)));
-    }
-  }
+  h5io::read_frame_series(r, out.blocks.blocks, out.frames);
 }
 
 }  // namespace

@@ -97,4 +97,36 @@ std::size_t length(const h5::Reader& r, const std::string& name);
 // The first dimension of a dataset, 0 for a scalar.
 std::size_t rows_of(const h5::Reader& r, const std::string& name);
 
+// /frames of a results file into `frames` (Frame or Frame3): `blocks` gives
+// the vertex count of every frame; the vertex, velocity and stress types of
+// the frame give the row widths (2 or 3; 6 or 12; 3 or 6).
+template <class Frame, class Blocks>
+void read_frame_series(const h5::Reader& r, const Blocks& blocks, std::vector<Frame>& frames) {
+  using Vertex = typename decltype(Frame::vertices)::value_type;
+  using Velocity = typename decltype(Frame::velocity)::value_type;
+  using Stress = typename decltype(Frame::stress)::value_type;
+  constexpr hsize_t dim = Vertex::RowsAtCompileTime, nvel = Velocity::RowsAtCompileTime,
+                    nstress = Stress::RowsAtCompileTime;
+  std::size_t nv = 0;
+  for (const auto& b : blocks) nv += b.vertices.size();
+  const std::size_t nb = blocks.size();
+  const std::size_t nf = length(r, "/frames/time");
+  const auto step = read_i64(r, "/frames/step", nf);
+  const auto time = read_f64(r, "/frames/time", {nf});
+  const auto verts = read_f64(r, "/frames/vertices", {nf, nv, dim});
+  const auto vel = read_f64(r, "/frames/velocity", {nf, nb, nvel});
+  const auto stress = read_f64(r, "/frames/stress", {nf, nb, nstress});
+  frames.resize(nf);
+  for (std::size_t f = 0; f < nf; ++f) {
+    Frame& fr = frames[f];
+    fr.step = static_cast<int>(step[f]);
+    fr.time = time[f];
+    for (std::size_t v = 0; v < nv; ++v) fr.vertices.push_back(Eigen::Map<const Vertex>(verts.data() + dim * (f * nv + v)));
+    for (std::size_t b = 0; b < nb; ++b) {
+      fr.velocity.push_back(Eigen::Map<const Velocity>(vel.data() + nvel * (f * nb + b)));
+      fr.stress.push_back(Eigen::Map<const Stress>(stress.data() + nstress * (f * nb + b)));
+    }
+  }
+}
+
 }  // namespace dda::df::h5io
