@@ -214,15 +214,15 @@ double Simulation3::max_vertex_displacement(const std::vector<Vector12d>& d) con
   return most;
 }
 
-StepInfo3 Simulation3::record(double dt, const std::vector<Vector12d>& d, int iterations, bool converged,
-                              int cuts) {
+StepInfo3 Simulation3::record(double dt, const std::vector<Vector12d>& d, double moved, int iterations,
+                              bool converged, int cuts) {
   StepInfo3 info;
   info.step = static_cast<int>(log_.size()) + 1;
   info.dt = dt;
   info.iterations = iterations;
   info.converged = converged;
   info.dt_cuts = cuts;
-  info.max_displacement = max_vertex_displacement(d);
+  info.max_displacement = moved;
   finish_step(d, dt);
   info.time = time_;
   for (const Contact3& c : contacts_) {
@@ -239,7 +239,7 @@ StepInfo3 Simulation3::step(double dt) {
   std::vector<Vector12d> d;
   int iterations = 0;
   const bool converged = iterate(dt, d, iterations);
-  return record(dt, d, iterations, converged, 0);
+  return record(dt, d, max_vertex_displacement(d), iterations, converged, 0);
 }
 
 StepInfo3 Simulation3::advance(double max_dt) {
@@ -280,7 +280,7 @@ StepInfo3 Simulation3::advance(double max_dt) {
                                  "penalties, the time step and the loads.",
                              static_cast<int>(log_.size()) + 1, time_, -1);
     }
-    const StepInfo3 info = record(dt, d, iterations, settled, cuts);
+    const StepInfo3 info = record(dt, d, moved, iterations, settled, cuts);
     // Easy steps let dt grow back gradually toward the user's dt.
     if (!shortened && cuts == 0) dt_ = std::min(ctl.dt, dt_ * 1.1);
     return info;

@@ -201,7 +201,9 @@ class Simulation3 {
   // Open-close iteration of one attempt; true if the states settled.
   bool iterate(double dt, std::vector<Vector12d>& d, int& iterations);
   double max_vertex_displacement(const std::vector<Vector12d>& d) const;
-  StepInfo3 record(double dt, const std::vector<Vector12d>& d, int iterations, bool converged, int cuts);
+  // Accepts the step: `moved` is max_vertex_displacement(d), already known.
+  StepInfo3 record(double dt, const std::vector<Vector12d>& d, double moved, int iterations, bool converged,
+                   int cuts);
   // Solves K d = F for the current states; returns all blocks' increments.
   std::vector<Vector12d> solve(double dt);
   void finish_step(const std::vector<Vector12d>& d, double dt);
