@@ -130,27 +130,7 @@ void read_series(const h5::Reader& r, Results3& out) {
 }
 
 void read_log(const h5::Reader& r, Results3& out) {
-  const std::size_t n = length(r, "/steps/time");
-  const auto step = read_i64(r, "/steps/step", n), it = read_i64(r, "/steps/iterations", n),
-             cuts = read_i64(r, "/steps/dt_cuts", n), conv = read_i64(r, "/steps/converged", n),
-             open = read_i64(r, "/steps/open", n), sliding = read_i64(r, "/steps/sliding", n),
-             locked = read_i64(r, "/steps/locked", n);
-  const auto time = read_f64(r, "/steps/time", {n}), dt = read_f64(r, "/steps/dt", {n}),
-             maxd = read_f64(r, "/steps/max_displacement", {n});
-  out.log.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    StepInfo3& s = out.log[i];
-    s.step = static_cast<int>(step[i]);
-    s.time = time[i];
-    s.dt = dt[i];
-    s.iterations = static_cast<int>(it[i]);
-    s.dt_cuts = static_cast<int>(cuts[i]);
-    s.converged = conv[i] != 0;
-    s.open = static_cast<int>(open[i]);
-    s.sliding = static_cast<int>(sliding[i]);
-    s.locked = static_cast<int>(locked[i]);
-    s.max_displacement = maxd[i];
-  }
+  df::h5io::read_step_columns(r, out.log, [](StepInfo3& s, int n) { s.iterations = n; });
 }
 
 void read_frames(const h5::Reader& r, Results3& out) {

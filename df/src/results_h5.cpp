@@ -288,28 +288,12 @@ void read_model(const h5::Reader& r, Results& out) {
 }
 
 void read_log(const h5::Reader& r, Results& out) {
-  const std::size_t n = length(r, "/steps/time");
-  const auto step = i64(r, "/steps/step", n), it = i64(r, "/steps/iterations", n), cuts = i64(r, "/steps/dt_cuts", n),
-             conv = i64(r, "/steps/converged", n), open = i64(r, "/steps/open", n),
-             sliding = i64(r, "/steps/sliding", n), locked = i64(r, "/steps/locked", n);
-  const auto time = f64(r, "/steps/time", {n}), dt = f64(r, "/steps/dt", {n}),
-             maxd = f64(r, "/steps/max_displacement", {n}), ke = f64(r, "/steps/kinetic_energy", {n}),
-             ee = f64(r, "/steps/elastic_energy", {n});
-  out.log.resize(n);
+  h5io::read_step_columns(r, out.log, [](StepRecord& s, int n) { s.open_close_iterations = n; });
+  const std::size_t n = out.log.size();
+  const auto ke = f64(r, "/steps/kinetic_energy", {n}), ee = f64(r, "/steps/elastic_energy", {n});
   for (std::size_t i = 0; i < n; ++i) {
-    StepRecord& s = out.log[i];
-    s.step = static_cast<int>(step[i]);
-    s.time = time[i];
-    s.dt = dt[i];
-    s.open_close_iterations = static_cast<int>(it[i]);
-    s.dt_cuts = static_cast<int>(cuts[i]);
-    s.converged = conv[i] != 0;
-    s.open = static_cast<int>(open[i]);
-    s.sliding = static_cast<int>(sliding[i]);
-    s.locked = static_cast<int>(locked[i]);
-    s.max_displacement = maxd[i];
-    s.kinetic_energy = ke[i];
-    s.elastic_energy = ee[i];
+    out.log[i].kinetic_energy = ke[i];
+    out.log[i].elastic_energy = ee[i];
   }
 }
 

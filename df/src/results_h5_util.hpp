@@ -129,4 +129,31 @@ void read_frame_series(const h5::Reader& r, const Blocks& blocks, std::vector<Fr
   }
 }
 
+// The inverse of write_step_columns: `log` gets one record per row of
+// /steps, `set_iterations(record, n)` stores the open-close count.
+template <class Record, class SetIterations>
+void read_step_columns(const h5::Reader& r, std::vector<Record>& log, SetIterations set_iterations) {
+  const std::size_t n = length(r, "/steps/time");
+  const auto step = read_i64(r, "/steps/step", n), it = read_i64(r, "/steps/iterations", n),
+             cuts = read_i64(r, "/steps/dt_cuts", n), conv = read_i64(r, "/steps/converged", n),
+             open = read_i64(r, "/steps/open", n), sliding = read_i64(r, "/steps/sliding", n),
+             locked = read_i64(r, "/steps/locked", n);
+  const auto time = read_f64(r, "/steps/time", {n}), dt = read_f64(r, "/steps/dt", {n}),
+             maxd = read_f64(r, "/steps/max_displacement", {n});
+  log.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    Record& s = log[i];
+    s.step = static_cast<int>(step[i]);
+    s.time = time[i];
+    s.dt = dt[i];
+    set_iterations(s, static_cast<int>(it[i]));
+    s.dt_cuts = static_cast<int>(cuts[i]);
+    s.converged = conv[i] != 0;
+    s.open = static_cast<int>(open[i]);
+    s.sliding = static_cast<int>(sliding[i]);
+    s.locked = static_cast<int>(locked[i]);
+    s.max_displacement = maxd[i];
+  }
+}
+
 }  // namespace dda::df::h5io
