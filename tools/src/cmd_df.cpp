@@ -65,11 +65,7 @@ Job job_from_scenario(const YamlNode& root, const BlockModel& blocks, const std:
   job.scenario = df::read_df_scenario(root, blocks, blocks_path);
   job.output = parse_output_options(root);
   df::Results& r = job.results;
-  r.source.provenance.scenario_path = root.file();
-  r.source.provenance.scenario_text = root.source_text();
-  r.source.provenance.seed = blocks.provenance.seed ? blocks.provenance.seed : scenario_seed(root);
-  r.source.input_kind = "scenario";
-  r.source.blocks_path = blocks_path;
+  r.source = scenario_source(root, blocks.provenance.seed, blocks_path);
   r.blocks = blocks;
   r.solver = job.scenario.input.control.solver;
   r.output = df::resolve_output_schedule(job.scenario.output, job.scenario.input.control);

@@ -30,11 +30,7 @@ Job3 job_from_scenario3(const YamlNode& root, const PolyhedronModel& blocks, con
   job.scenario = df3::read_df3_scenario(root, blocks, blocks_path);
   job.output = parse_output_options(root);
   df3::Results3& r = job.results;
-  r.source.provenance.scenario_path = root.file();
-  r.source.provenance.scenario_text = root.source_text();
-  r.source.provenance.seed = blocks.provenance.seed ? blocks.provenance.seed : scenario_seed(root);
-  r.source.input_kind = "scenario";
-  r.source.blocks_path = blocks_path;
+  r.source = scenario_source(root, blocks.provenance.seed, blocks_path);
   r.blocks = blocks;
   r.output = df3::resolve_output_schedule(job.scenario.output, job.scenario.model.control);
   return job;

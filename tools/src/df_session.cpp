@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "dda/common/error.hpp"
+#include "dda/common/scenario.hpp"
 #include "dda/common/vtk.hpp"
 #include "pipeline.hpp"
 
@@ -128,6 +129,16 @@ void report_run_end(df::RunEnd end, const std::string& summary, const DfStage& s
                          "`\n");
   else
     say(stage.quiet, "DF: " + summary + " written to " + stage.results_path + "\n");
+}
+
+df::ResultsSource scenario_source(const YamlNode& root, std::uint64_t blocks_seed, const std::string& blocks_path) {
+  df::ResultsSource src;
+  src.provenance.scenario_path = root.file();
+  src.provenance.scenario_text = root.source_text();
+  src.provenance.seed = blocks_seed ? blocks_seed : scenario_seed(root);
+  src.input_kind = "scenario";
+  src.blocks_path = blocks_path;
+  return src;
 }
 
 }  // namespace dda::cli

@@ -4,11 +4,14 @@
 // the ParaView series, and the sentences that end a run.
 #include <chrono>
 #include <csignal>
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
 
 #include "commands.hpp"
+#include "dda/common/yaml_reader.hpp"
+#include "dda/df/results.hpp"
 #include "pipeline.hpp"
 #include "dda/df/run_loop.hpp"
 #include "dda/df/runaway.hpp"
@@ -67,6 +70,11 @@ void report_run_end(df::RunEnd end, const std::string& summary, const DfStage& s
 
 // A number in its shortest usual form.
 std::string num(double v);
+
+// Where a run from a scenario comes from (the results file's root
+// attributes): the scenario's path and text, the seed of the blocks (else
+// the scenario's), and the blocks file as given.
+df::ResultsSource scenario_source(const YamlNode& root, std::uint64_t blocks_seed, const std::string& blocks_path);
 
 // A resumed run keeps what its results file saved: where it came from, the
 // output schedule it started with and the frames so far; says where it
