@@ -46,6 +46,10 @@ Eigen::Matrix<double, 3, 2> tangents(const ContactGeometry3& g) {
   return t;
 }
 
+// The shear anchor of an unloaded spring: P projected into j's contact
+// plane (no tangential offset).
+Vec3 unloaded_anchor(const ContactGeometry3& g) { return g.point_i - (g.point_i - g.point_j).dot(g.normal) * g.normal; }
+
 Contact3 from_candidate(const ContactCandidate3& cand, int a, int b) {
   Contact3 c;
   c.i = cand.a_is_i ? a : b;
@@ -61,7 +65,7 @@ Contact3 from_candidate(const ContactCandidate3& cand, int a, int b) {
     c.ids[3] = cand.edge_j[1];
   }
   c.geo = cand.geo;
-  c.ref_j = cand.geo.point_i - (cand.geo.point_i - cand.geo.point_j).dot(cand.geo.normal) * cand.geo.normal;
+  c.ref_j = unloaded_anchor(cand.geo);
   c.point_now = cand.geo.point_i;
   return c;
 }
@@ -287,7 +291,7 @@ ContactState3 update_contact3(Contact3& c, const Model3& m, const df::FrictionLa
   // unloaded at the foot Q; a sliding contact that sticks keeps the friction
   // force it carried (spring stretched by F / ps along the slip, as in 2D).
   auto lock = [&]() {
-    c.ref_j = g.point_i - (g.point_i - g.point_j).dot(g.normal) * g.normal;  // tangential offset 0
+    c.ref_j = unloaded_anchor(g);
     if (old == ContactState3::Sliding) c.ref_j -= tangents(g) * c.slip_dir * (friction_used / ps);
     return ContactState3::Locked;
   };
