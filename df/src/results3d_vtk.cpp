@@ -13,7 +13,7 @@ namespace dda::df3 {
 void write_blocks3_frame_vtu(const std::string& path, const Simulation3& sim, const std::vector<Polyhedron>& initial) {
   VtuGrid g;
   std::vector<std::int64_t> id;
-  std::vector<std::int32_t> fixed;
+  std::vector<std::int32_t> fixed, material;
   std::vector<double> disp, vel, rot, stress, point_disp;
   const auto& blocks = sim.blocks();
   for (std::size_t i = 0; i < blocks.size(); ++i) {
@@ -29,6 +29,8 @@ void write_blocks3_frame_vtu(const std::string& path, const Simulation3& sim, co
     g.add_polyhedron(b.vertices.size(), faces);
     id.push_back(static_cast<std::int64_t>(i));
     fixed.push_back(sim.model().fixed[i] ? 1 : 0);
+    // 0: materials.default, k + 1: materials.zones[k] (Model3::block_material).
+    material.push_back(sim.model().block_material.empty() ? 0 : sim.model().block_material[i]);
     // Both centroids recomputed from the vertices, so a block at rest shows 0.
     const Vec3 dc = block_geometry(b.vertices, b.faces).centroid - block_geometry(b0.vertices, b0.faces).centroid;
     disp.insert(disp.end(), {dc.x(), dc.y(), dc.z()});
@@ -42,6 +44,7 @@ void write_blocks3_frame_vtu(const std::string& path, const Simulation3& sim, co
   g.point_data("displacement", 3, std::move(point_disp));
   g.cell_data("block_id", 1, std::move(id));
   g.cell_data("fixed", 1, std::move(fixed));
+  g.cell_data("material", 1, std::move(material));
   g.cell_data("displacement", 3, std::move(disp));
   g.cell_data("velocity", 3, std::move(vel));
   g.cell_data("rotation_rate", 3, std::move(rot));

@@ -23,7 +23,7 @@ namespace {
 using df::join_names;
 
 struct Parsed3 {
-  Material3 material;
+  MaterialsSpec3 materials;
   df::JointsSection joints;
   Vec3 gravity{0, 0, -9.81};
   struct Load {
@@ -39,21 +39,6 @@ struct Parsed3 {
   int max_open_close = 10;
   std::optional<double> normal_penalty, shear_penalty, contact_reach;
 };
-
-Material3 read_material3(const YamlNode& root) {
-  Material3 m;
-  const auto s = root.optional_child("materials");
-  if (!s) return m;
-  if (s->is_map() && s->has("zones"))
-    s->fail_key("zones", "are 2D only: the 3D solver gives every block one material (give materials.default)");
-  s->allow({"default"});
-  const YamlNode d = s->child("default");  // the only thing the section gives
-  d.allow({"density", "young", "poisson"});
-  m.density = d.number("density", m.density, Range::positive());
-  m.young = d.number("young", m.young, Range::positive());
-  m.poisson = d.number("poisson", m.poisson, Range{-1, 0.5, true, true});
-  return m;
-}
 
 // The 2D joint keys the 3D contacts cannot honour: a contact is a point with
 // no area to carry a bond, and its springs are the run's (control).
@@ -147,7 +132,7 @@ void read_control3(const YamlNode& root, Parsed3& p) {
 
 Parsed3 parse(const YamlNode& root) {
   Parsed3 p;
-  p.material = read_material3(root);
+  p.materials = read_materials3(root);
   p.joints = read_joints3(root);
   read_loading3(root, p);
   p.fixed = read_fixed3(root);
@@ -172,13 +157,17 @@ double reference_length(const std::vector<Polyhedron>& blocks) {
 
 // Young's modulus times the size of a typical moving block (the cube root of
 // the free blocks' mean volume): a contact spring about as stiff as the
-// blocks it joins.
+// blocks it joins. With zones, the largest modulus of the free blocks (as
+// 2D takes the largest of its materials): a spring softer than the stiffest
+// block would let that block sink into its neighbours further than it
+// deforms itself; fixed blocks do not deform at all, so theirs does not count.
 double default_normal_penalty(const Model3& m) {
-  double volume = 0;
+  double volume = 0, young = 0;
   int count = 0;
   for (std::size_t b = 0; b < m.blocks.size(); ++b)
-    if (!m.fixed[b]) volume += m.blocks[b].volume, ++count;
-  return m.material.young * std::cbrt(count > 0 ? volume / count : 1.0);
+    if (!m.fixed[b]) volume += m.blocks[b].volume, ++count, young = std::max(young, m.material_of(b).young);
+  if (count == 0) young = m.materials.front().young;  // not reached: fixing every block is refused
+  return young * std::cbrt(count > 0 ? volume / count : 1.0);
 }
 
 // Measurement, fixed and load points of the blocks file, each in the block
@@ -315,11 +304,11 @@ DfScenario3 read_df3_scenario(const YamlNode& root, const PolyhedronModel& block
   DfScenario3 out;
   Model3& m = out.model;
   m.blocks = blocks.blocks;
-  m.material = p.material;
   m.default_joint = p.joints.default_joint;
   m.joint_sets = df::joints_by_set(p.joints, blocks.sets, blocks_path);
   m.gravity = p.gravity;
   m.fixed = select_fixed_blocks(p.fixed, blocks, blocks_path);
+  assign_materials3(p.materials, blocks, blocks_path, m);  // after m.fixed: fixed blocks start at rest
   add_points(p, root, blocks, blocks_path, m);
   if (p.earthquake_node) {
     const bool any_fixed = std::find(m.fixed.begin(), m.fixed.end(), true) != m.fixed.end();

@@ -72,8 +72,7 @@ Simulation3::Simulation3(Model3 model) : model_(std::move(model)), solver_(df::m
     dof_.push_back(model_.fixed[b] ? -1 : n_dofs_);
     if (!model_.fixed[b]) n_dofs_ += kDofs;
   }
-  velocity_.assign(n, Vector12d::Zero());
-  stress_.assign(n, Vector6d::Zero());
+  set_initial_state();
   known_.assign(n, Vector12d::Zero());
   if (model_.earthquake.motion && !model_.earthquake.mode)
     throw std::invalid_argument("Model3: an earthquake needs its mode (loading or displacement)");
@@ -125,9 +124,10 @@ std::vector<Vector12d> Simulation3::solve(double dt) {
       const BlockGeometry3 g = block_geometry(model_.blocks[b]);
       Matrix12d k = Matrix12d::Zero();
       Vector12d f = Vector12d::Zero();
-      add_inertia(g, model_.material.density, velocity_[b], dt, k, f);
-      add_elasticity(g, model_.material, stress_[b], k, f);
-      add_body_force(g, model_.material.density, body_acceleration_, f);
+      const Material3& material = model_.material_of(static_cast<std::size_t>(b));
+      add_inertia(g, material.density, velocity_[b], dt, k, f);
+      add_elasticity(g, material, stress_[b], k, f);
+      add_body_force(g, material.density, body_acceleration_, f);
       add_point_terms(b, dt, g, k, f);
       sys.add_k(b, b, k);
       sys.add_f(b, f);
@@ -298,7 +298,6 @@ void Simulation3::run() {
 }
 
 void Simulation3::finish_step(const std::vector<Vector12d>& d, double dt) {
-  const Matrix6d dmat = elastic_matrix(model_.material);
   std::vector<Vec3> old_centroid;
   for (const auto& b : model_.blocks) old_centroid.push_back(b.centroid);
   for (Contact3& c : contacts_) {
@@ -325,7 +324,7 @@ void Simulation3::finish_step(const std::vector<Vector12d>& d, double dt) {
       continue;
     }
     velocity_[b] = 2.0 / dt * d[b] - velocity_[b];  // constant acceleration in the step
-    stress_[b] += dmat * d[b].segment<6>(kStrain);
+    stress_[b] += elastic_matrix(model_.material_of(b)) * d[b].segment<6>(kStrain);  // the block's own material
     Polyhedron& p = model_.blocks[b];
     for (auto& v : p.vertices) v = move_point(old_centroid[b], d[b], v);  // exact rotation
     refresh_geometry(p);

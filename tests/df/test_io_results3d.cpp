@@ -23,7 +23,7 @@ Model3 incline_model(const PolyhedronModel& blocks) {
   Model3 m;
   m.blocks = blocks.blocks;
   m.fixed = {true, false};
-  m.material = {2600, 1e10, 0.25};
+  m.materials = {{2600, 1e10, 0.25}};
   df::JointProperties j;
   j.friction_deg = 10;
   m.joint_sets = {j};

@@ -55,8 +55,8 @@ std::string replaced(std::string text, const std::string& from, const std::strin
 TEST(Scenario3d, BuildsTheModel) {
   const DfScenario3 s = read(kScenario);
   const Model3& m = s.model;
-  EXPECT_EQ(m.material.density, 2500);
-  EXPECT_EQ(m.material.young, 2e10);
+  EXPECT_EQ(m.material_of(1).density, 2500);
+  EXPECT_EQ(m.material_of(1).young, 2e10);
   EXPECT_EQ(m.fixed, (std::vector<bool>{true, false}));  // the base's centroid lies below z = -0.2
   ASSERT_EQ(m.joint_sets.size(), 1u);
   EXPECT_EQ(m.joint_sets[0].friction_deg, 12);
@@ -158,6 +158,100 @@ TEST(Scenario3d, EarthquakeInThreeComponents) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("loading.earthquake.mode must be one of"), std::string::npos) << e.what();
   }
+}
+
+// materials.zones and the initial state (docs/scenario.md, "The 3D forward
+// run"). Block 0 is the fixed base, block 1 the free cube (volume 1 m^3).
+const std::string kDefault = "  default: {density: 2500, young: 2.0e10, poisson: 0.2}\n";
+
+std::string with_materials(const std::string& lines) { return replaced(kScenario, kDefault, lines); }
+
+TEST(Scenario3d, ZonesAndInitialState) {
+  const DfScenario3 s = read(with_materials(
+      "  default: {density: 2500, young: 2.0e10, poisson: 0.2, initial_stress: [-1e5, -2e5, -3e5, 4e3, 5e3, 6e3],\n"
+      "            initial_velocity: [0, 0, 0.1, 0, 0, 0]}\n"
+      "  zones:\n"
+      "    - {blocks: [1], density: 2000, young: 3.0e10, initial_velocity: [1, 2, 3, 0.1, 0.2, 0.3]}\n"));
+  const Model3& m = s.model;
+  EXPECT_EQ(m.block_material, (std::vector<int>{0, 1}));
+  ASSERT_EQ(m.materials.size(), 2u);
+  EXPECT_EQ(m.material_of(0).density, 2500);
+  EXPECT_EQ(m.material_of(1).density, 2000);
+  EXPECT_EQ(m.material_of(1).young, 3e10);
+  EXPECT_EQ(m.material_of(1).poisson, 0.2);  // not given by the zone: the default's
+  // [sx, sy, sz, txy, tyz, tzx] as given; Vector6d holds [sx sy sz tyz tzx txy].
+  Vector6d stress;
+  stress << -1e5, -2e5, -3e5, 5e3, 6e3, 4e3;
+  ASSERT_EQ(m.initial_stress.size(), 2u);
+  EXPECT_EQ(m.initial_stress[0], stress);  // a fixed block reports its stress too
+  EXPECT_EQ(m.initial_stress[1], stress);  // the zone keeps the default's
+  Vector12d velocity = Vector12d::Zero();
+  velocity.head<6>() << 1, 2, 3, 0.1, 0.2, 0.3;
+  ASSERT_EQ(m.initial_velocity.size(), 2u);
+  EXPECT_EQ(m.initial_velocity[0], Vector12d::Zero());  // fixed: no unknowns, at rest
+  EXPECT_EQ(m.initial_velocity[1], velocity);
+  // The default normal spring takes the largest modulus of the free blocks.
+  EXPECT_DOUBLE_EQ(m.normal_penalty, 3e10 * std::cbrt(1.0));
+  Simulation3 sim(m);
+  EXPECT_EQ(sim.velocities()[1], velocity);
+  EXPECT_EQ(sim.stresses()[1], stress);
+}
+
+TEST(Scenario3d, FirstZoneThatHoldsABlockWins) {
+  const Model3 m = read(with_materials(kDefault +
+                                       "  zones:\n"
+                                       "    - {blocks: [1], density: 2200}\n"
+                                       "    - {box: [-9, -9, -9, 9, 9, 9], density: 2100, young: 9.0e10}\n"))
+                       .model;
+  EXPECT_EQ(m.block_material, (std::vector<int>{2, 1}));
+  EXPECT_EQ(m.material_of(0).density, 2100);
+  EXPECT_EQ(m.material_of(1).density, 2200);
+  // The stiff zone holds only the fixed base, so the spring stays the cube's.
+  EXPECT_DOUBLE_EQ(m.normal_penalty, 2e10);
+  // Selections as in `fixed`: by level, body-free blocks by id, outside a box.
+  EXPECT_EQ(read(with_materials(kDefault + "  zones: [{below: -0.2, density: 2100}]\n")).model.block_material,
+            (std::vector<int>{1, 0}));
+  EXPECT_EQ(read(with_materials(kDefault + "  zones: [{outside: [-2, -2, -0.2, 2, 2, 2], density: 2100}]\n"))
+                .model.block_material,
+            (std::vector<int>{1, 0}));
+}
+
+TEST(Scenario3d, MaterialMistakesAreOneSentence) {
+  struct Case {
+    std::string lines, message;
+  };
+  const std::string zones = kDefault + "  zones:\n";
+  const std::vector<Case> cases{
+      {zones + "    - {below: -50, density: 2100}\n", "s.yaml:5: materials.zones[0].below selects no block of b3.h5."},
+      {zones + "    - {blocks: [1], density: 2100}\n    - {box: [-1, -1, 0, 1, 1, 1], density: 2200}\n",
+       "s.yaml:6: materials.zones[1] holds no block: every block it selects is in an earlier zone"},
+      {zones + "    - {blocks: [7], density: 2100}\n",
+       "s.yaml:5: materials.zones[0].blocks[0] is block 7, but b3.h5 has 2 blocks (ids 0 to 1)."},
+      {zones + "    - {density: 2100}\n",
+       "s.yaml:5: materials.zones[0] must select its blocks with at least one of blocks, bodies, below, box or "
+       "outside."},
+      {zones + "    - {polygon: [[0, 0], [1, 0], [1, 1]], density: 2100}\n",
+       "s.yaml:5: materials.zones[0].polygon is a 2D zone selection"},
+      {zones + "    - {removability: [falls], density: 2100}\n",
+       "s.yaml:5: unknown key 'materials.zones[0].removability'"},
+      {zones + "    - {blocks: [1], plane: strain}\n", "s.yaml:5: materials.zones[0].plane is 2D only"},
+      {"  default: {density: 2500, plane: stress}\n", "s.yaml:3: materials.default.plane is 2D only"},
+      {"  default: {initial_stress: [1e5, 0, 0]}\n",
+       "s.yaml:3: materials.default.initial_stress must be [sx, sy, sz, txy, tyz, tzx] (six numbers), got 3."},
+      {"  default: {initial_velocity: [1, 0, 0]}\n",
+       "s.yaml:3: materials.default.initial_velocity must be [vx, vy, vz, wx, wy, wz] (six numbers), got 3."},
+      {zones + "    - {blocks: [1], initial_stress: [1, 2, 3, 4, 5, 6, 7]}\n",
+       "s.yaml:5: materials.zones[0].initial_stress must be [sx, sy, sz, txy, tyz, tzx] (six numbers), got 7."},
+      {"  zones: [{blocks: [1], density: 2100}]\n", "s.yaml:3: required key 'materials.default' is missing."},
+  };
+  for (const Case& c : cases) {
+    const std::string e = error_of(with_materials(c.lines));
+    EXPECT_EQ(e.rfind(c.message, 0), 0u) << "got: " << e << "\nexpected to start with: " << c.message;
+  }
+  // Mistakes that need no blocks fail before DL runs (dda run).
+  EXPECT_THROW(check_df3_scenario(YamlNode::load_string(
+                   with_materials("  default: {initial_velocity: [1, 0]}\n"), "s.yaml")),
+               InputError);
 }
 
 }  // namespace

@@ -51,7 +51,7 @@ SlideResult slide(double alpha_deg, const df::JointProperties& joint, double dt,
   Model3 m;
   m.blocks = {box({-5, -5, -1}, {5, 5, 0}, r), box({-0.5, -0.5, 0}, {0.5, 0.5, 1}, r)};
   m.fixed = {true, false};
-  m.material = {2600, 1e10, 0.25};
+  m.materials = {{2600, 1e10, 0.25}};
   m.default_joint = joint;
   m.normal_penalty = 1e9;
   m.shear_penalty = 1e9;

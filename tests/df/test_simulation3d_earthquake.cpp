@@ -73,7 +73,7 @@ Trajectory dda(Vec3 (*body)(double), double t_end, const std::string& mode, doub
   Model3 m;
   m.blocks = {testing::box({-5, -5, -1}, {5, 5, 0}, r), testing::box({-0.5, -0.5, 0}, {0.5, 0.5, 1}, r)};
   m.fixed = {true, false};
-  m.material = {2600, 1e10, 0.25};
+  m.materials = {{2600, 1e10, 0.25}};
   m.default_joint.friction_deg = 30;
   m.normal_penalty = m.shear_penalty = penalty;
   m.gravity = {0, 0, -kG};

@@ -17,7 +17,7 @@ namespace {
 Model3 one_cube(const Vec3& gravity) {
   Model3 m;
   m.blocks = {testing::box({0, 0, 0}, {1, 1, 1})};
-  m.material = {2600, 1e10, 0.25};
+  m.materials = {{2600, 1e10, 0.25}};
   m.gravity = gravity;
   return m;
 }

@@ -125,7 +125,7 @@ WedgeModel build(double phi_deg, double penalty, Layout layout = Layout::LargerF
     m.fixed.push_back(!above);
   }
   if (w.wedge >= 0) w.weight = kRho * kG * m.blocks[static_cast<std::size_t>(w.wedge)].volume;
-  m.material = {kRho, 1e10, 0.25};
+  m.materials = {{kRho, 1e10, 0.25}};
   m.default_joint.friction_deg = phi_deg;
   m.normal_penalty = penalty;
   m.shear_penalty = penalty;

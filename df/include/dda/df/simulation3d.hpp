@@ -45,7 +45,19 @@ struct Control3 {
 struct Model3 {
   std::vector<Polyhedron> blocks;  // convex; volume / centroid / second_moment are recomputed
   std::vector<bool> fixed;         // fixed blocks have no unknowns (d = 0); empty = none fixed
-  Material3 material;
+  // Block b is of materials[block_material[b]]; an empty block_material
+  // puts every block in materials[0].
+  std::vector<Material3> materials{Material3{}};
+  std::vector<int> block_material;
+  // The state at t = 0, each empty (all zero) or one entry per block.
+  // Stress in Vector6d's order [sx sy sz tyz tzx txy] (Pa, tension
+  // positive): it is carried exactly as the stress of earlier steps, so a
+  // free block relaxes it into strain. Velocity: rates of the twelve
+  // unknowns, [vx vy vz] of the centroid (m/s), [wx wy wz] the angular
+  // velocity (rad/s), then strain rates (1/s); zero on fixed blocks, which
+  // have no unknowns.
+  std::vector<Vector6d> initial_stress;
+  std::vector<Vector12d> initial_velocity;
   // Joint properties by the joint set of the faces in contact (PolyFace::set;
   // index = set id); faces of other sets (boundary, excavation, none given)
   // use default_joint. Only the friction is read (law, angle, parameters);
@@ -69,6 +81,10 @@ struct Model3 {
   double tolerance = 1e-11;
   int max_iterations = 10;         // open-close iterations per step (then advance() cuts dt)
   Control3 control;
+
+  const Material3& material_of(std::size_t b) const {
+    return materials[block_material.empty() ? 0 : static_cast<std::size_t>(block_material[b])];
+  }
 };
 
 enum class ContactState3 { Open, Sliding, Locked };
@@ -209,6 +225,9 @@ class Simulation3 {
   void finish_step(const std::vector<Vector12d>& d, double dt);
   // One law per joint set, then the default joint's (friction_).
   void make_friction_laws();
+  // Checks the materials and the initial state of the model and starts
+  // velocity_ and stress_ from it (simulation3d_materials.cpp).
+  void set_initial_state();
   // Points: checked and indexed by block in the constructor; their springs
   // and loads enter block b's terms; they move with their blocks.
   void index_points();
