@@ -3,6 +3,7 @@
 #include "dda/df/contact3d_geometry.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <utility>
@@ -31,6 +32,23 @@ ContactGeometry3 linearise(const Vec3& p, const Vec3& ci, const Vec3& q, const V
   g.es = tt * ti;
   g.gs = -tt * tj;
   return g;
+}
+
+// An axis-aligned box: the cheap first test of the candidate search.
+struct Bounds {
+  Vec3 lo, hi;
+  bool contains(const Vec3& p) const { return (p.array() >= lo.array()).all() && (p.array() <= hi.array()).all(); }
+  bool overlaps(const Bounds& o) const { return (lo.array() <= o.hi.array()).all() && (o.lo.array() <= hi.array()).all(); }
+};
+
+// The bounds of the points, grown by `margin` on every side.
+template <class Points>
+Bounds bounds(const Points& points, double margin) {
+  Bounds b{Vec3::Constant(1e300), Vec3::Constant(-1e300)};
+  for (const Vec3& p : points) b.lo = b.lo.cwiseMin(p), b.hi = b.hi.cwiseMax(p);
+  b.lo.array() -= margin;
+  b.hi.array() += margin;
+  return b;
 }
 
 struct Edge {
@@ -91,8 +109,10 @@ double entry_margin(const Polyhedron& p, const std::vector<Edge>& edges, int v, 
 // margin. If none is admissible, the largest margin wins.
 void vertex_face_contacts(const Polyhedron& i, const std::vector<Edge>& edges_i, const Polyhedron& j, bool a_is_i,
                           const Contact3Options& opt, std::vector<ContactCandidate3>& out) {
+  const Bounds reach_of_j = bounds(j.vertices, opt.reach);
   for (int v = 0; v < static_cast<int>(i.vertices.size()); ++v) {
     const Vec3& p = i.vertices[v];
+    if (!reach_of_j.contains(p)) continue;  // no face of j within reach (most vertices of a neighbour)
     int best = -1;
     double best_dn = 0, best_margin = 0;
     bool best_ok = false;
@@ -141,20 +161,44 @@ ContactGeometry3 vertex_face_geometry(const Vec3& p, const Vec3& ci, const Vec3&
   return linearise(p, ci, q, cj, normal, t1_hint);
 }
 
-ContactGeometry3 edge_edge_geometry(const Vec3& p1, const Vec3& p2, const Vec3& ci, const Vec3& q1,
-                                    const Vec3& q2, const Vec3& cj, const Vec3& out_j) {
+namespace {
+
+// The closest points of two non-parallel lines and the contact normal,
+// without the linearisation (the candidate search rejects most edge pairs
+// on these alone).
+struct EdgePair {
+  Vec3 normal, p, q;
+  double s = 0, t = 0, dn0 = 0;
+};
+
+EdgePair closest_points(const Vec3& p1, const Vec3& p2, const Vec3& q1, const Vec3& q2, const Vec3& out_j) {
   const Vec3 a = p2 - p1, b = q2 - q1, w = p1 - q1;
-  Vec3 n = a.cross(b).normalized();
-  if (n.dot(out_j) < 0) n = -n;
+  EdgePair e;
+  e.normal = a.cross(b).normalized();
+  if (e.normal.dot(out_j) < 0) e.normal = -e.normal;
   // Closest points of the two lines: (P - Q) orthogonal to a and b.
   const double aa = a.dot(a), ab = a.dot(b), bb = b.dot(b), aw = a.dot(w), bw = b.dot(w);
   const double den = aa * bb - ab * ab;  // = |a x b|^2 > 0 for non-parallel lines
-  const double s = (ab * bw - bb * aw) / den;
-  const double t = (aa * bw - ab * aw) / den;
-  ContactGeometry3 g = linearise(p1 + s * a, ci, q1 + t * b, cj, n, a);
-  g.s = s;
-  g.t = t;
+  e.s = (ab * bw - bb * aw) / den;
+  e.t = (aa * bw - ab * aw) / den;
+  e.p = p1 + e.s * a;
+  e.q = q1 + e.t * b;
+  e.dn0 = e.normal.dot(e.p - e.q);
+  return e;
+}
+
+ContactGeometry3 edge_geometry(const EdgePair& e, const Vec3& ci, const Vec3& cj, const Vec3& a) {
+  ContactGeometry3 g = linearise(e.p, ci, e.q, cj, e.normal, a);
+  g.s = e.s;
+  g.t = e.t;
   return g;
+}
+
+}  // namespace
+
+ContactGeometry3 edge_edge_geometry(const Vec3& p1, const Vec3& p2, const Vec3& ci, const Vec3& q1,
+                                    const Vec3& q2, const Vec3& cj, const Vec3& out_j) {
+  return edge_geometry(closest_points(p1, p2, q1, q2, out_j), ci, cj, p2 - p1);
 }
 
 std::vector<ContactCandidate3> find_contacts3(const Polyhedron& a, const Polyhedron& b, const Contact3Options& opt) {
@@ -173,22 +217,32 @@ std::vector<ContactCandidate3> find_contacts3(const Polyhedron& a, const Polyhed
   auto bisector = [](const Polyhedron& p, const Edge& e) {
     return (p.faces[e.faces[0]].normal + p.faces[e.faces[1]].normal).normalized();
   };
+  // Edges farther apart than the reach along some axis cannot touch.
+  std::vector<Bounds> near_b;
+  near_b.reserve(edges_b.size());
+  for (const auto& eb : edges_b) near_b.push_back(bounds(std::array{b.vertices[eb.v[0]], b.vertices[eb.v[1]]}, opt.reach));
+  const Bounds reach_of_b = bounds(b.vertices, opt.reach);
   for (const auto& ea : edges_a) {
     const Vec3 &p1 = a.vertices[ea.v[0]], &p2 = a.vertices[ea.v[1]];
+    const Bounds box_a = bounds(std::array{p1, p2}, 0.0);
+    if (!box_a.overlaps(reach_of_b)) continue;
     const Vec3 mi = bisector(a, ea);
     const double cos_i = mi.dot(a.faces[ea.faces[0]].normal);
-    for (const auto& eb : edges_b) {
+    for (size_t kb = 0; kb < edges_b.size(); ++kb) {
+      if (!box_a.overlaps(near_b[kb])) continue;
+      const Edge& eb = edges_b[kb];
       const Vec3 &q1 = b.vertices[eb.v[0]], &q2 = b.vertices[eb.v[1]];
       const Vec3 da = p2 - p1, db = q2 - q1;
       if (da.cross(db).norm() <= opt.parallel_sin * da.norm() * db.norm()) continue;
       const Vec3 mj = bisector(b, eb);
-      ContactGeometry3 g = edge_edge_geometry(p1, p2, a.centroid, q1, q2, b.centroid, mj);
-      if (std::abs(g.dn0) > opt.reach) continue;
+      const EdgePair e = closest_points(p1, p2, q1, q2, mj);
+      if (std::abs(e.dn0) > opt.reach) continue;
       // Strictly interior: an end on the other edge is a vertex-face contact.
       const double ts = opt.tolerance / da.norm(), tt = opt.tolerance / db.norm();
-      if (g.s <= ts || g.s >= 1 - ts || g.t <= tt || g.t >= 1 - tt) continue;
-      if (g.normal.dot(mj) < mj.dot(b.faces[eb.faces[0]].normal) - opt.cone_tol) continue;
-      if (-g.normal.dot(mi) < cos_i - opt.cone_tol) continue;
+      if (e.s <= ts || e.s >= 1 - ts || e.t <= tt || e.t >= 1 - tt) continue;
+      if (e.normal.dot(mj) < mj.dot(b.faces[eb.faces[0]].normal) - opt.cone_tol) continue;
+      if (-e.normal.dot(mi) < cos_i - opt.cone_tol) continue;
+      const ContactGeometry3 g = edge_geometry(e, a.centroid, b.centroid, da);
       ContactCandidate3 c;
       c.kind = ContactKind3::EdgeEdge;
       c.a_is_i = true;
