@@ -15,13 +15,15 @@
 // about 100, 1,000 and 10,000 blocks.
 //
 // Each benchmark iteration is one Simulation3::step(dt) (default dt = 2 ms,
-// --dt S), the first from rest included; --steps N steps (default 6).
+// --dt S), the first from rest included; --steps N steps (default 6);
+// --solver auto|cholmod|pcg (default auto: Control3::solver).
 // Counters: blocks, fixed, contacts and closed contacts after the last
 // step, ms_first (the first step: from rest, the first CHOLMOD analysis),
 // ms_later (the mean of the others), solves per step (open-close
 // iterates), and the shares of the step spent in contact detection,
 // assembly and the linear solve (the rest: open-close updates and the
-// end-of-step block update). Assembly and solve come from
+// end-of-step block update), and PCG's mean iterations per solve and
+// its fallbacks to CHOLMOD. Assembly and solve come from
 // Simulation3::timings(); detection is timed by running detect_contacts3 on
 // the same state just before each step, outside the timed step (the step
 // then repeats that very work).
@@ -51,6 +53,7 @@ constexpr double kSmallest = 0.01;    // m^3: smaller blocks are left out
 
 int g_steps = 6;
 double g_dt = 2e-3;
+std::string g_solver = "auto";
 
 dda::FractureModel jointed_cube(double edge) {
   dda::FractureModel m;
@@ -83,6 +86,7 @@ Model3 cube_model(double edge) {
     m.fixed.push_back(bottom < 1e-6 * edge);  // the bottom layer rests on the (absent) ground
   }
   m.contact_reach = 0.02 * kSpacing;
+  m.control.solver = g_solver;
   return m;
 }
 
@@ -128,6 +132,10 @@ void BM_JointedCube(benchmark::State& state) {
   state.counters["detect_pct"] = 100 * detection / total;
   state.counters["assembly_pct"] = 100 * t.assembly / total;
   state.counters["solve_pct"] = 100 * t.solve / total;
+  const dda::df::SolverStats st = sim.solver().stats();
+  state.counters["pcg_iterations"] =
+      st.pcg_solves > 0 ? static_cast<double>(st.pcg_iterations) / static_cast<double>(st.pcg_solves) : 0;
+  state.counters["fallbacks"] = static_cast<double>(st.fallbacks);
   state.counters["threads"] = omp_get_max_threads();
 }
 
@@ -140,6 +148,8 @@ int main(int argc, char** argv) {
     const bool has_value = i + 1 < argc;
     if (std::strcmp(argv[i], "--steps") == 0 && has_value) {
       g_steps = std::max(1, std::atoi(argv[++i]));
+    } else if (std::strcmp(argv[i], "--solver") == 0 && has_value) {
+      g_solver = argv[++i];
     } else if (std::strcmp(argv[i], "--dt") == 0 && has_value) {
       g_dt = std::atof(argv[++i]);
     } else {

@@ -135,6 +135,7 @@ void write_checkpoint3(h5::Writer& w, const Simulation3State& s) {
   w.f64(pg.get(), "load_position", flat(s.load_at), {s.load_at.size(), 3}, "m", "where each load point is now");
   w.f64(pg.get(), "measurement_position", flat(s.measure_at), {s.measure_at.size(), 3}, "m",
         "where each measurement point is now");
+  df::h5io::write_warm_start(w, g.get(), s.solver_warm_start);
 }
 
 Simulation3State read_checkpoint3(const h5::Reader& r, const std::vector<std::size_t>& vertex_counts) {
@@ -217,6 +218,7 @@ Simulation3State read_checkpoint3(const h5::Reader& r, const std::vector<std::si
   s.fixed_at = points(r, "/checkpoint/points/fixed_position");
   s.load_at = points(r, "/checkpoint/points/load_position");
   s.measure_at = points(r, "/checkpoint/points/measurement_position");
+  s.solver_warm_start = df::h5io::read_warm_start(r, "/checkpoint");
   return s;
 }
 

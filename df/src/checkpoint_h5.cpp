@@ -136,11 +136,7 @@ void write_checkpoint(h5::Writer& w, const SimulationState& s) {
     w.i32(bolts.get(), "broken", broken, "", "1 once broken");
   }
 
-  h5::Id sg(H5Gcreate2(g.get(), "solver", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
-  const Eigen::VectorXd& x = s.solver_warm_start.x;
-  w.f64(sg.get(), "warm_start", std::vector<double>(x.data(), x.data() + x.size()), {static_cast<hsize_t>(x.size())},
-        "m, rad, 1", "last solution of an iterative solver (its next start vector); empty for direct solvers");
-  w.attr_f64(sg.get(), "warm_start_dt", s.solver_warm_start.dt);
+  h5io::write_warm_start(w, g.get(), s.solver_warm_start);
 }
 
 void read_checkpoint(const h5::Reader& r, const std::vector<std::size_t>& vertex_counts, SimulationState& s) {
@@ -252,11 +248,7 @@ void read_checkpoint(const h5::Reader& r, const std::vector<std::size_t>& vertex
   for (std::size_t k = 0; k < nbolts; ++k)
     s.bolts[k] = {anchor[k], head[k], rest.data[k], force.data[k], broken.data[k] != 0};
 
-  const h5::Array<double> x = r.f64("/checkpoint/solver/warm_start");
-  if (x.dims.size() != 1) r.fail("dataset /checkpoint/solver/warm_start must be one-dimensional");
-  s.solver_warm_start.x = Eigen::Map<const Eigen::VectorXd>(x.data.data(), static_cast<Eigen::Index>(x.data.size()));
-  h5::Id solver_group(H5Gopen2(r.file(), "/checkpoint/solver", H5P_DEFAULT), H5Gclose);
-  s.solver_warm_start.dt = r.attr_f64(solver_group.get(), "warm_start_dt", "/checkpoint/solver").value_or(0);
+  s.solver_warm_start = h5io::read_warm_start(r, "/checkpoint");
 }
 
 }  // namespace dda::df

@@ -98,6 +98,26 @@ std::size_t rows_of(const h5::Reader& r, const std::string& name) {
   return a.dims.empty() ? 0 : a.dims[0];
 }
 
+void write_warm_start(h5::Writer& w, hid_t checkpoint, const LinearSolver::WarmStart& start) {
+  h5::Id sg = subgroup(checkpoint, "solver");
+  const Eigen::VectorXd& x = start.x;
+  w.f64(sg.get(), "warm_start", std::vector<double>(x.data(), x.data() + x.size()), {static_cast<hsize_t>(x.size())},
+        "m, rad, 1", "last solution of an iterative solver (its next start vector); empty for direct solvers");
+  w.attr_f64(sg.get(), "warm_start_dt", start.dt);
+}
+
+LinearSolver::WarmStart read_warm_start(const h5::Reader& r, const std::string& checkpoint) {
+  LinearSolver::WarmStart start;
+  const std::string group = checkpoint + "/solver";
+  if (!r.exists(group)) return start;
+  const h5::Array<double> x = r.f64(group + "/warm_start");
+  if (x.dims.size() != 1) r.fail("dataset " + group + "/warm_start must be one-dimensional");
+  start.x = Eigen::Map<const Eigen::VectorXd>(x.data.data(), static_cast<Eigen::Index>(x.data.size()));
+  h5::Id g(H5Gopen2(r.file(), group.c_str(), H5P_DEFAULT), H5Gclose);
+  start.dt = r.attr_f64(g.get(), "warm_start_dt", group).value_or(0);
+  return start;
+}
+
 void write_points(h5::Writer& w, const std::vector<std::string>& names, const std::vector<std::int32_t>& blocks,
                   const std::vector<double>& initial, hsize_t dim) {
   h5::Id g = w.group("points");

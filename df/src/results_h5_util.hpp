@@ -10,6 +10,7 @@
 #include "dda/common/geometry.hpp"
 #include "dda/common/geometry3.hpp"
 #include "dda/common/h5_util.hpp"
+#include "dda/df/linear_solver.hpp"
 #include "dda/df/results.hpp"
 
 namespace dda::df::h5io {
@@ -70,6 +71,14 @@ void write_step_columns(h5::Writer& w, hid_t g, const std::vector<Record>& log, 
   w.f64(g, "max_displacement", reals([](const Record& r) { return r.max_displacement; }), n, "m",
         "largest vertex displacement of the step");
 }
+
+// <checkpoint>/solver: an iterative solver's warm start (its last solution
+// and the step it was for; empty for direct solvers), which a resumed run
+// needs to reproduce the uninterrupted one bit for bit.
+void write_warm_start(h5::Writer& w, hid_t checkpoint, const LinearSolver::WarmStart& start);
+// The inverse; an empty start if the checkpoint has no solver group (files
+// written before the 3D solver had PCG).
+LinearSolver::WarmStart read_warm_start(const h5::Reader& r, const std::string& checkpoint);
 
 // A group below `parent`.
 h5::Id subgroup(hid_t parent, const std::string& name);

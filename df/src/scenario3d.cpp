@@ -37,6 +37,7 @@ struct Parsed3 {
   FixedSpec3 fixed;
   df::RunLength run;
   int max_open_close = 10;
+  std::string solver = "auto";
   std::optional<double> normal_penalty, shear_penalty, contact_reach;
 };
 
@@ -116,7 +117,7 @@ void read_loading3(const YamlNode& root, Parsed3& p) {
 
 void read_control3(const YamlNode& root, Parsed3& p) {
   const YamlNode c = root.child("control");
-  std::vector<std::string> keys{"max_open_close", "normal_penalty", "shear_penalty", "contact_reach"};
+  std::vector<std::string> keys{"max_open_close", "normal_penalty", "shear_penalty", "contact_reach", "solver"};
   keys.insert(keys.end(), std::begin(df::kRunLengthKeys), std::end(df::kRunLengthKeys));
   c.allow(keys);
   const Control3 defaults3;
@@ -128,6 +129,7 @@ void read_control3(const YamlNode& root, Parsed3& p) {
   if (c.has("normal_penalty")) p.normal_penalty = c.number("normal_penalty", Range::positive());
   if (c.has("shear_penalty")) p.shear_penalty = c.number("shear_penalty", Range::positive());
   if (c.has("contact_reach")) p.contact_reach = c.number("contact_reach", Range::positive());
+  p.solver = c.choice("solver", {"auto", "cholmod", "pcg"}, "auto");
 }
 
 Parsed3 parse(const YamlNode& root) {
@@ -323,6 +325,7 @@ DfScenario3 read_df3_scenario(const YamlNode& root, const PolyhedronModel& block
   c.steps = p.run.steps;
   c.max_displacement_ratio = p.run.max_displacement_ratio;
   c.min_dt_ratio = p.run.min_dt_ratio;
+  c.solver = p.solver;
   m.max_iterations = p.max_open_close;
   m.normal_penalty = p.normal_penalty ? *p.normal_penalty : default_normal_penalty(m);
   m.shear_penalty = p.shear_penalty ? *p.shear_penalty : m.normal_penalty;

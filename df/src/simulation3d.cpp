@@ -63,7 +63,16 @@ Eigen::SparseMatrix<double> block_lower_pattern(const std::vector<int>& dof, int
   return k;
 }
 
-Simulation3::Simulation3(Model3 model) : model_(std::move(model)), solver_(df::make_cholmod_solver()) {
+namespace {
+df::PcgOptions pcg_options3() {
+  df::PcgOptions o;
+  o.block_size = kDofs;
+  return o;
+}
+}  // namespace
+
+Simulation3::Simulation3(Model3 model)
+    : model_(std::move(model)), solver_(df::make_solver(model_.control.solver, kAutoPcgBlocks3, pcg_options3())) {
   const size_t n = model_.blocks.size();
   if (model_.fixed.empty()) model_.fixed.assign(n, false);
   if (model_.fixed.size() != n) throw std::invalid_argument("Model3: fixed must have one entry per block");
@@ -138,7 +147,7 @@ std::vector<Vector12d> Simulation3::solve(double dt) {
   }
   {
     df::ScopedTimer timer(timings_.solve);
-    x = solver_->solve(k_lower_, x);  // CHOLMOD: InternalError if K is not positive definite
+    x = solver_->solve_step(k_lower_, x, dt);  // InternalError if K is not positive definite
     ++timings_.solves;
   }
   for (size_t b = 0; b < d.size(); ++b)

@@ -17,6 +17,7 @@ Simulation3State Simulation3::state() const {
   s.load_at = load_at_;
   s.measure_at = measure_at_;
   s.histories = histories_;
+  s.solver_warm_start = solver_->warm_start();
   return s;
 }
 
@@ -44,6 +45,7 @@ void Simulation3::restore(const Simulation3State& s) {
   load_at_ = s.load_at;
   measure_at_ = s.measure_at;
   histories_ = s.histories;
+  solver_->set_warm_start(s.solver_warm_start);
 }
 
 }  // namespace dda::df3

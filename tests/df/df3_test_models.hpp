@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "dda/common/polyhedron_model.hpp"
+#include "dda/df/simulation3d.hpp"
 
 namespace dda::df3::testing {
 
@@ -34,6 +35,23 @@ inline Eigen::Matrix3d plane_rotation(double dip_deg, double dip_direction_deg) 
   ry << std::cos(a), 0, std::sin(a), 0, 1, 0, -std::sin(a), 0, std::cos(a);
   rz << std::cos(b), -std::sin(b), 0, std::sin(b), std::cos(b), 0, 0, 0, 1;
   return rz * ry;
+}
+
+// Three layers of 1 m cubes in running bond (every other layer shifted by
+// half a cube) on a plane dipping 15 deg, the bottom layer fixed, friction
+// 10 deg: the upper layers slide, so contacts open, lock and slide.
+inline Model3 sliding_stack() {
+  const Eigen::Matrix3d r = plane_rotation(15, 90);
+  Model3 m;
+  for (int z = 0; z < 3; ++z)
+    for (int y = 0; y < 3; ++y)
+      for (int x = 0; x < 4; ++x) {
+        const Vec3 lo(x + 0.5 * (z % 2), y, z);
+        m.blocks.push_back(box(lo, lo + Vec3(1, 1, 1), r));
+        m.fixed.push_back(z == 0);
+      }
+  m.default_joint.friction_deg = 10;
+  return m;
 }
 
 }  // namespace dda::df3::testing

@@ -76,28 +76,11 @@ TEST(BroadPhase3, SameWithOneAndTwoThreads) {
   EXPECT_EQ(one, brute_force(boxes, 0.05));
 }
 
-// Three layers of 1 m cubes in running bond (every other layer shifted by
-// half a cube) on a plane dipping 15 deg, the bottom layer fixed, friction
-// 10 deg: the upper layers slide, so contacts open, lock and slide.
-Model3 sliding_stack() {
-  const Eigen::Matrix3d r = testing::plane_rotation(15, 90);
-  Model3 m;
-  for (int z = 0; z < 3; ++z)
-    for (int y = 0; y < 3; ++y)
-      for (int x = 0; x < 4; ++x) {
-        const Vec3 lo(x + 0.5 * (z % 2), y, z);
-        m.blocks.push_back(testing::box(lo, lo + Vec3(1, 1, 1), r));
-        m.fixed.push_back(z == 0);
-      }
-  m.default_joint.friction_deg = 10;
-  return m;
-}
-
 std::vector<Polyhedron> run_stack(int threads, std::vector<Contact3>& contacts) {
   const int saved = omp_get_max_threads(), saved_grain = df::parallel_grain();
   omp_set_num_threads(threads);
   df::set_parallel_grain(1);  // the parallel loops even on 36 blocks
-  Simulation3 sim(sliding_stack());
+  Simulation3 sim(testing::sliding_stack());
   for (int s = 0; s < 10; ++s) sim.step(2e-3);
   omp_set_num_threads(saved);
   df::set_parallel_grain(saved_grain);
@@ -122,7 +105,7 @@ TEST(BroadPhase3, StepIsTheSameOnOneAndTwoThreads) {
   for (size_t b = 0; b < one.size(); ++b)
     for (size_t v = 0; v < one[b].vertices.size(); ++v) {
       EXPECT_EQ(one[b].vertices[v], two[b].vertices[v]) << "block " << b << " vertex " << v;
-      moved = std::max(moved, (one[b].vertices[v] - sliding_stack().blocks[b].vertices[v]).norm());
+      moved = std::max(moved, (one[b].vertices[v] - testing::sliding_stack().blocks[b].vertices[v]).norm());
     }
   EXPECT_GT(moved, 1e-4);  // it did slide
 }

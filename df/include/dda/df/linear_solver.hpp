@@ -5,8 +5,9 @@
 //  * "cholmod": sparse Cholesky (CHOLMOD, fill-reducing ordering chosen by
 //    CHOLMOD: AMD, or METIS when AMD fills badly), the symbolic analysis kept
 //    while the pattern holds.
-//  * "pcg": conjugate gradients preconditioned by the inverse 6x6 diagonal
-//    blocks (block Jacobi, each block inverted through its Cholesky factor),
+//  * "pcg": conjugate gradients preconditioned by the inverse diagonal blocks
+//    (block Jacobi: 6x6 in 2D, 12x12 in 3D, PcgOptions::block_size; each
+//    block inverted through its Cholesky factor),
 //    warm-started from the last solution: within a step that is the previous
 //    open-close iterate; across steps the last solution of the previous step
 //    times dt / dt_previous (d ~ v dt). It stops when the block-Jacobi
@@ -52,6 +53,10 @@ class LinearSolver {
   // it was assembled for; iterative solvers scale their warm start with it
   // (0: no scaling). The default forms the CSC lower triangle and calls solve.
   virtual Eigen::VectorXd solve_step(const BlockSystem& sys, double dt);
+  // The same for a system given by its lower triangle (the 3D solver's K,
+  // laid out in 12x12 blocks, see lower_block_csc.hpp). The default calls
+  // solve.
+  virtual Eigen::VectorXd solve_step(const Eigen::SparseMatrix<double>& lower, const Eigen::VectorXd& b, double dt);
   // How many symbolic analyses were done (pattern reuse diagnostics).
   virtual int analyses() const = 0;
   virtual SolverStats stats() const;
@@ -69,9 +74,10 @@ class LinearSolver {
 struct PcgOptions {
   double tolerance = 1e-10;   // relative, block-Jacobi preconditioned residual norm
   int max_iterations = 2000;  // then CHOLMOD solves the system
+  int block_size = 6;         // unknowns per block: 6 (2D) or 12 (3D)
 };
 
-// Size from which "auto" uses PCG, in blocks.
+// Size from which "auto" uses PCG, in blocks (2D).
 constexpr int kAutoPcgBlocks = 200;
 
 // CHOLMOD supernodal/simplicial Cholesky; the symbolic analysis is kept while

@@ -19,6 +19,7 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <memory>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -40,7 +41,14 @@ struct Control3 {
   int steps = 0;
   double max_displacement_ratio = 0.01; // no vertex moves more than this times w0 in a step (else dt is cut)
   double min_dt_ratio = 1e-3;           // dt is never cut below this times dt
+  // Linear solver (linear_solver.hpp): "cholmod", "pcg" (12x12 block-Jacobi
+  // conjugate gradients, warm-started) or "auto": CHOLMOD below
+  // kAutoPcgBlocks3 free blocks, PCG from there on.
+  std::string solver = "auto";
 };
+
+// Size from which the 3D "auto" solver uses PCG, in free blocks.
+constexpr int kAutoPcgBlocks3 = 200;
 
 struct Model3 {
   std::vector<Polyhedron> blocks;  // convex; volume / centroid / second_moment are recomputed
@@ -178,6 +186,7 @@ struct Simulation3State {
   std::vector<StepInfo3> log;
   std::vector<Vec3> fixed_at, load_at, measure_at;
   std::vector<std::vector<MeasurementSample3>> histories;
+  df::LinearSolver::WarmStart solver_warm_start;  // PCG's start vector (empty for CHOLMOD)
 };
 
 class Simulation3 {
@@ -210,6 +219,7 @@ class Simulation3 {
   // Wall time of assembly and solves, summed over all steps (contact_search
   // and total are not filled: bench/bench_df3d.cpp times those itself).
   const df::StepTimings& timings() const { return timings_; }
+  const df::LinearSolver& solver() const { return *solver_; }
 
  private:
   void detect();                     // contacts at the start of the step, with their joints

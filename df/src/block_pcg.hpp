@@ -1,0 +1,162 @@
+#pragma once
+// Conjugate gradients preconditioned by the inverse N x N diagonal blocks
+// (block Jacobi), for the step systems of the 2D (N = 6) and 3D (N = 12)
+// solvers. Internal to df/src: linear_solver_pcg.cpp wraps it into the
+// LinearSolver choices.
+//
+// The operator is anything with
+//   int blocks() const;
+//   <N x N matrix> diagonal(int i) const;   // its lower triangle is read
+//   void multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y,
+//                 const Eigen::Matrix<double, N, N>* symmetric_diagonal) const;
+// (BlockSystem for 2D, LowerBlockCsc<12> for 3D).
+//
+// Determinism: every vector loop runs over fixed chunks of blocks; the dot
+// products add the chunks' partial sums serially in chunk order, so the
+// iterates are the same bit for bit with any number of OpenMP threads, as
+// long as the operator's multiply is.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+
+#include "dda/df/block_system.hpp"  // parallel_grain
+
+namespace dda::df {
+
+template <int N>
+class BlockJacobiPcg {
+ public:
+  using Block = Eigen::Matrix<double, N, N>;
+  using Segment = Eigen::Matrix<double, N, 1>;
+
+  explicit BlockJacobiPcg(int max_iterations) : max_iterations_(max_iterations) {}
+
+  long iterations() const { return iterations_; }
+
+  // Solves op x = b starting from x, until the preconditioned residual norm
+  // sqrt(r' M^-1 r) falls to `tolerance` times that of b; true on
+  // convergence. False also when a diagonal block or the operator is not
+  // positive definite (in floating point): a direct solver then decides.
+  template <class Op>
+  bool solve(const Op& op, const Eigen::VectorXd& b, Eigen::VectorXd& x, double tolerance) {
+    const int nb = op.blocks();
+    const Eigen::Index n = x.size();
+    if (!precondition(op)) return false;
+    r_.resize(n);
+    z_.resize(n);
+    p_.resize(n);
+    q_.resize(n);
+    // |b|_M^-1, with z as scratch.
+    const double bb = chunked(nb, [&](int lo, int hi) {
+      double s = 0;
+      for (int i = lo; i < hi; ++i) {
+        apply(b, z_, i);
+        s += b.template segment<N>(N * i).dot(z_.template segment<N>(N * i));
+      }
+      return s;
+    });
+    if (!(bb > 0)) {
+      x.setZero();
+      return std::isfinite(bb);
+    }
+    const double target = tolerance * tolerance * bb;
+    op.multiply(x, q_, diagonal_.data());
+    double rz = chunked(nb, [&](int lo, int hi) {
+      double s = 0;
+      for (int i = lo; i < hi; ++i) {
+        const Eigen::Index a = N * i;
+        r_.template segment<N>(a) = b.template segment<N>(a) - q_.template segment<N>(a);
+        apply(r_, z_, i);
+        p_.template segment<N>(a) = z_.template segment<N>(a);
+        s += r_.template segment<N>(a).dot(z_.template segment<N>(a));
+      }
+      return s;
+    });
+    for (int it = 0; it < max_iterations_; ++it) {
+      if (rz <= target) return true;
+      if (!std::isfinite(rz)) return false;
+      op.multiply(p_, q_, diagonal_.data());
+      const double pq = chunked(nb, [&](int lo, int hi) {
+        return p_.segment(N * lo, N * (hi - lo)).dot(q_.segment(N * lo, N * (hi - lo)));
+      });
+      if (!(pq > 0)) return false;  // breakdown: not SPD in floating point
+      const double alpha = rz / pq;
+      const double rz_new = chunked(nb, [&](int lo, int hi) {
+        const Eigen::Index a = N * lo, len = N * (hi - lo);
+        x.segment(a, len) += alpha * p_.segment(a, len);
+        r_.segment(a, len) -= alpha * q_.segment(a, len);
+        for (int i = lo; i < hi; ++i) apply(r_, z_, i);
+        return r_.segment(a, len).dot(z_.segment(a, len));
+      });
+      const double beta = rz_new / rz;
+      rz = rz_new;
+      ++iterations_;
+      chunked(nb, [&](int lo, int hi) {
+        const Eigen::Index a = N * lo, len = N * (hi - lo);
+        p_.segment(a, len) = z_.segment(a, len) + beta * p_.segment(a, len);
+        return 0.0;
+      });
+    }
+    return rz <= target;
+  }
+
+ private:
+  static constexpr int kChunkBlocks = 32;  // blocks per chunk of the vector loops (fixed: it sets the sum order)
+
+  void apply(const Eigen::VectorXd& v, Eigen::VectorXd& out, int i) const {
+    out.template segment<N>(N * i).noalias() = inverse_[i] * v.template segment<N>(N * i);
+  }
+
+  // Symmetric diagonal blocks and their inverses; false if one is not
+  // positive definite. A block equal to the one of the last solve keeps its
+  // inverse (most do from one open-close iterate to the next).
+  template <class Op>
+  bool precondition(const Op& op) {
+    const int nb = op.blocks();
+    if (static_cast<int>(diagonal_.size()) != nb) {
+      diagonal_.assign(nb, Block::Constant(std::numeric_limits<double>::quiet_NaN()));
+      inverse_.resize(nb);
+    }
+    int bad = 0;
+#pragma omp parallel for schedule(static) reduction(+ : bad) if (nb > parallel_grain())
+    for (int i = 0; i < nb; ++i) {
+      const Block d = Block(op.diagonal(i)).template selfadjointView<Eigen::Lower>();
+      if (d == diagonal_[i]) continue;
+      diagonal_[i] = d;
+      const Eigen::LLT<Block> llt(d);
+      if (llt.info() != Eigen::Success) {
+        ++bad;
+        diagonal_[i].setConstant(std::numeric_limits<double>::quiet_NaN());  // never matches
+        inverse_[i].setIdentity();
+        continue;
+      }
+      inverse_[i] = llt.solve(Block::Identity());
+    }
+    return bad == 0;
+  }
+
+  // Runs body(lo, hi) over chunks of blocks in parallel and returns the sum
+  // of its results, added in chunk order.
+  template <class Body>
+  double chunked(int nb, Body&& body) {
+    const int chunks = (nb + kChunkBlocks - 1) / kChunkBlocks;
+    partial_.assign(static_cast<std::size_t>(chunks), 0.0);
+#pragma omp parallel for schedule(static) if (nb > parallel_grain() && chunks > 1)
+    for (int c = 0; c < chunks; ++c) partial_[c] = body(c * kChunkBlocks, std::min(nb, (c + 1) * kChunkBlocks));
+    double sum = 0;
+    for (const double v : partial_) sum += v;
+    return sum;
+  }
+
+  int max_iterations_;
+  long iterations_ = 0;
+  std::vector<Block> diagonal_, inverse_;
+  std::vector<double> partial_;
+  Eigen::VectorXd r_, z_, p_, q_;
+};
+
+}  // namespace dda::df

@@ -1,0 +1,192 @@
+#pragma once
+// A view of a symmetric matrix of N x N blocks given by its lower triangle in
+// compressed column form, laid out as the 3D solver assembles it
+// (block_lower_pattern in simulation3d_assembly.hpp): the columns of block
+// column b hold first the lower part of the diagonal block (column c: rows
+// N b + c .. N b + N - 1), then, for each coupled block r > b in increasing
+// order, its N rows N r .. N r + N - 1. Each column of an off-diagonal block
+// is thus N contiguous values, which the product below reads as a fixed-size
+// vector. The view gives block-Jacobi PCG (block_pcg.hpp) its operator
+// without copying K into another format.
+//
+// Internal to df/src.
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <algorithm>
+#include <vector>
+
+#include "dda/df/block_system.hpp"  // parallel_grain
+
+namespace dda::df {
+
+template <int N>
+class LowerBlockCsc {
+ public:
+  using Block = Eigen::Matrix<double, N, N>;
+  using Segment = Eigen::Matrix<double, N, 1>;
+
+  // Reads `lower` from now on (it must outlive the calls); the index is
+  // rebuilt only when its pattern differs from the last one bound. False if
+  // the matrix does not have the layout above (the view is then unusable).
+  bool bind(const Eigen::SparseMatrix<double>& lower) {
+    matrix_ = &lower;
+    if (!same_pattern(lower)) valid_ = build(lower);
+    if (valid_) find_nonzero_blocks();
+    return valid_;
+  }
+
+  int blocks() const { return blocks_; }
+
+  // The diagonal block of block i; its lower triangle (upper: zero).
+  Block diagonal(int i) const {
+    Block d = Block::Zero();
+    const double* values = matrix_->valuePtr();
+    const int* outer = matrix_->outerIndexPtr();
+    for (int c = 0; c < N; ++c)
+      for (int r = c; r < N; ++r) d(r, c) = values[outer[N * i + c] + r - c];
+    return d;
+  }
+
+  // y = K x. `symmetric_diagonal`, if given, holds the diagonal blocks made
+  // symmetric. Each stored block is read once, for both its product and its
+  // transpose's: the product is bound by memory traffic, and K's blocks
+  // (100 MB at 10,000 blocks) do not stay in cache from one half to the
+  // other. The block columns are cut into kParts fixed ranges, each adding
+  // into its own copy of y; the copies are summed in part order, so the
+  // result does not depend on the number of threads.
+  void multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y, const Block* symmetric_diagonal) const {
+    const double* values = matrix_->valuePtr();
+    const int* outer = matrix_->outerIndexPtr();
+    const int nb = blocks_;
+    const Eigen::Index n = static_cast<Eigen::Index>(N) * nb;
+    y.resize(n);
+    partial_.resize(n, kParts);
+#pragma omp parallel for schedule(dynamic, 1) if (nb > parallel_grain())
+    for (int part = 0; part < kParts; ++part) {
+      auto yp = partial_.col(part);
+      yp.setZero();
+      for (int b = part_start_[part]; b < part_start_[part + 1]; ++b) {
+        const auto xb = x.template segment<N>(N * b);
+        Segment acc;
+        if (symmetric_diagonal) {
+          acc.noalias() = symmetric_diagonal[b] * xb;
+        } else {
+          const Block d = diagonal(b).template selfadjointView<Eigen::Lower>();
+          acc.noalias() = d * xb;
+        }
+        for (int k = below_start_[b]; k < below_start_[b + 1]; ++k) {
+          if (!nonzero_[k]) continue;
+          const int r = below_row_[k], rank = k - below_start_[b];
+          const auto xr = x.template segment<N>(N * r);
+          Segment to_r = Segment::Zero();
+          for (int c = 0; c < N; ++c) {
+            const Eigen::Map<const Segment> column(values + outer[N * b + c] + (N - c) + N * rank);
+            acc[c] += column.dot(xr);  // (B^T x_r)_c
+            to_r.noalias() += xb[c] * column;  // B x_b
+          }
+          yp.template segment<N>(N * r) += to_r;
+        }
+        yp.template segment<N>(N * b) += acc;
+      }
+    }
+    // y = sum of the parts, in part order.
+#pragma omp parallel for schedule(static) if (nb > parallel_grain())
+    for (Eigen::Index i = 0; i < n; ++i) {
+      double sum = 0;
+      for (int part = 0; part < kParts; ++part) sum += partial_(i, part);
+      y[i] = sum;
+    }
+  }
+
+ private:
+  // Which coupled blocks hold a value other than zero. The pattern keeps the
+  // pairs of open contacts too (so that CHOLMOD keeps its analysis), whose
+  // blocks are zero: the product skips them, which saves reading them on
+  // every iteration for one read here. (Skipping exact zeros changes no
+  // sum, as long as x is finite.)
+  void find_nonzero_blocks() {
+    const double* values = matrix_->valuePtr();
+    const int* outer = matrix_->outerIndexPtr();
+    nonzero_.resize(below_row_.size());
+#pragma omp parallel for schedule(static) if (blocks_ > parallel_grain())
+    for (int b = 0; b < blocks_; ++b)
+      for (int k = below_start_[b]; k < below_start_[b + 1]; ++k) {
+        const int rank = k - below_start_[b];
+        bool any = false;
+        for (int c = 0; c < N && !any; ++c)
+          any = (Eigen::Map<const Segment>(values + outer[N * b + c] + (N - c) + N * rank).array() != 0).any();
+        nonzero_[k] = any;
+      }
+  }
+
+  // Same outer array and the same coupled blocks in every block column.
+  bool same_pattern(const Eigen::SparseMatrix<double>& m) const {
+    if (!valid_ || !m.isCompressed() || m.rows() != static_cast<Eigen::Index>(N) * blocks_ ||
+        m.cols() != m.rows() || m.nonZeros() != nonzeros_)
+      return false;
+    const int* outer = m.outerIndexPtr();
+    if (!std::equal(outer, outer + m.cols() + 1, outer_.begin())) return false;
+    const int* inner = m.innerIndexPtr();
+    for (int b = 0; b < blocks_; ++b)
+      for (int k = below_start_[b]; k < below_start_[b + 1]; ++k)
+        if (inner[outer[N * b] + N + N * (k - below_start_[b])] != N * below_row_[k]) return false;
+    return true;
+  }
+
+  bool build(const Eigen::SparseMatrix<double>& m) {
+    blocks_ = 0;
+    if (!m.isCompressed() || m.rows() != m.cols() || m.rows() % N != 0) return false;
+    const int nb = static_cast<int>(m.rows() / N);
+    const int* outer = m.outerIndexPtr();
+    const int* inner = m.innerIndexPtr();
+    below_start_.assign(1, 0);
+    below_row_.clear();
+    for (int b = 0; b < nb; ++b) {
+      const int first = outer[N * b];
+      const int count = outer[N * b + 1] - first - N;  // rows below the diagonal block
+      if (count < 0 || count % N != 0) return false;
+      const int neighbours = count / N;
+      for (int c = 0; c < N; ++c) {
+        const int start = outer[N * b + c];
+        if (outer[N * b + c + 1] - start != (N - c) + count) return false;
+        for (int r = c; r < N; ++r)
+          if (inner[start + r - c] != N * b + r) return false;
+        for (int k = 0; k < neighbours; ++k) {
+          const int* rows = inner + start + (N - c) + N * k;
+          if (rows[0] % N != 0 || rows[0] <= N * b || (k > 0 && rows[0] <= rows[-N])) return false;
+          if (c > 0 && rows[0] != inner[first + N + N * k]) return false;
+          for (int r = 1; r < N; ++r)
+            if (rows[r] != rows[0] + r) return false;
+        }
+      }
+      for (int k = 0; k < neighbours; ++k) below_row_.push_back(inner[first + N + N * k] / N);
+      below_start_.push_back(static_cast<int>(below_row_.size()));
+    }
+    // Parts of about equal stored blocks (the diagonal ones counted too).
+    part_start_.assign(1, 0);
+    const double per_part = static_cast<double>(nb + below_row_.size()) / kParts;
+    for (int b = 0, part = 1; b < nb && part < kParts; ++b)
+      if (static_cast<double>(b + 1 + below_start_[b + 1]) >= per_part * part) {
+        part_start_.push_back(b + 1);
+        ++part;
+      }
+    while (static_cast<int>(part_start_.size()) <= kParts) part_start_.push_back(nb);
+    outer_.assign(outer, outer + m.cols() + 1);
+    nonzeros_ = m.nonZeros();
+    blocks_ = nb;
+    return true;
+  }
+
+  static constexpr int kParts = 8;  // fixed: it sets the summation order
+  const Eigen::SparseMatrix<double>* matrix_ = nullptr;
+  bool valid_ = false;
+  int blocks_ = 0;
+  Eigen::Index nonzeros_ = 0;
+  std::vector<int> outer_;
+  std::vector<int> below_start_{0}, below_row_;         // per block column: coupled blocks below
+  std::vector<char> nonzero_;                            // per coupled block: not all zero (find_nonzero_blocks)
+  std::vector<int> part_start_;                          // kParts + 1 block columns
+  mutable Eigen::MatrixXd partial_;                      // y of each part
+};
+
+}  // namespace dda::df
