@@ -53,6 +53,8 @@ class HybridSolver final : public LinearSolver {
     return s;
   }
 
+  void set_trial(bool trial) override { trial_ = trial; }
+  bool last_was_trial() const override { return last_was_trial_; }
   WarmStart warm_start() const override { return {x_last_, dt_last_}; }
   void set_warm_start(const WarmStart& w) override {
     x_last_ = w.x;
@@ -69,6 +71,7 @@ class HybridSolver final : public LinearSolver {
   Eigen::VectorXd solve_step(const Eigen::SparseMatrix<double>& lower, const Eigen::VectorXd& b,
                              double dt) override {
     const int bs = options_.block_size;
+    last_was_trial_ = false;
     if (lower.rows() % bs != 0 || !use_pcg(static_cast<int>(lower.rows() / bs))) {
       ++solves_;
       return direct_->solve(lower, b);
@@ -84,6 +87,7 @@ class HybridSolver final : public LinearSolver {
 
   Eigen::VectorXd solve_step(const BlockSystem& sys, double dt) override {
     ++solves_;
+    last_was_trial_ = false;
     if (!use_pcg(sys.blocks())) return direct_->solve_step(sys, dt);
     return iterate(pcg6_, sys, sys.rhs(), dt, [&] { return direct_->solve_step(sys, dt); });
   }
@@ -105,7 +109,9 @@ class HybridSolver final : public LinearSolver {
       x = Eigen::VectorXd::Zero(n);
     }
     ++pcg_solves_;
-    if (!pcg.solve(op, b, x, options_.tolerance)) {
+    if (pcg.solve(op, b, x, trial_ ? options_.trial_tolerance : options_.tolerance)) {
+      last_was_trial_ = trial_;
+    } else {
       ++fallbacks_;
       x = direct();
     }
@@ -122,6 +128,7 @@ class HybridSolver final : public LinearSolver {
   BlockJacobiPcg<kBlock3d> pcg12_;
   LowerBlockCsc<kBlock3d> view12_;
   long solves_ = 0, pcg_solves_ = 0, fallbacks_ = 0;
+  bool trial_ = false, last_was_trial_ = false;
   Eigen::VectorXd x_last_;
   double dt_last_ = 0;
 };

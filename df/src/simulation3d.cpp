@@ -183,9 +183,16 @@ bool Simulation3::iterate(double dt, std::vector<Vector12d>& d, int& iterations)
   prepare_input(dt);
   std::vector<int> changes(contacts_.size(), 0);  // state changes of each contact in this step
   iterations = 0;
+  // Trial solves (linear_solver.hpp) while the states change; an iterate
+  // that settles on a trial solve is solved again at full accuracy and
+  // checked once more, and the last iterate allowed is always a full solve.
+  bool trial = true;
+  const df::TrialScope trial_scope(*solver_);
   while (iterations < model_.max_iterations) {
     ++iterations;
+    solver_->set_trial(trial && iterations < model_.max_iterations);
     d = solve(dt);
+    const bool was_trial = solver_->last_was_trial();
     for (size_t b = 0; b < d.size(); ++b)
       if (dof_[b] < 0) d[b] = known_[b];
     bool settled = true;
@@ -199,7 +206,8 @@ bool Simulation3::iterate(double dt, std::vector<Vector12d>& d, int& iterations)
       c.state = s;
     }
     if (settled) {
-      return true;
+      if (!was_trial) return true;
+      trial = false;
     }
   }
   return false;  // d is from states one update behind the stored ones

@@ -67,12 +67,35 @@ class LinearSolver {
     Eigen::VectorXd x;  // last solution
     double dt = 0;      // the step it was for
   };
+  // Trial solves. While the open-close states are still changing, an
+  // iterate's answer only has to decide them, and is solved again anyway: an
+  // iterative solver may then stop at PcgOptions::trial_tolerance. The
+  // caller solves the iterate that settles the states at full accuracy
+  // (last_was_trial tells it whether it must). Direct solvers ignore this.
+  virtual void set_trial(bool /*trial*/) {}
+  // Whether the last solve stopped at the trial tolerance (false for direct
+  // solves and CHOLMOD fallbacks).
+  virtual bool last_was_trial() const { return false; }
   virtual WarmStart warm_start() const { return {}; }
   virtual void set_warm_start(const WarmStart& /*w*/) {}
 };
 
+// Trial solves off again when an open-close iteration ends, however it ends
+// (a later solve outside the iteration must be a full one).
+class TrialScope {
+ public:
+  explicit TrialScope(LinearSolver& solver) : solver_(solver) {}
+  TrialScope(const TrialScope&) = delete;
+  TrialScope& operator=(const TrialScope&) = delete;
+  ~TrialScope() { solver_.set_trial(false); }
+
+ private:
+  LinearSolver& solver_;
+};
+
 struct PcgOptions {
   double tolerance = 1e-10;   // relative, block-Jacobi preconditioned residual norm
+  double trial_tolerance = 1e-6;  // the same for trial solves (LinearSolver::set_trial)
   int max_iterations = 2000;  // then CHOLMOD solves the system
   int block_size = 6;         // unknowns per block: 6 (2D) or 12 (3D)
 };
