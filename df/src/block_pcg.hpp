@@ -108,7 +108,7 @@ class BlockJacobiPcg {
   static constexpr int kChunkBlocks = 32;  // blocks per chunk of the vector loops (fixed: it sets the sum order)
 
   void apply(const Eigen::VectorXd& v, Eigen::VectorXd& out, int i) const {
-    out.template segment<N>(N * i).noalias() = inverse_[i] * v.template segment<N>(N * i);
+    out.template segment<N>(N * i).noalias() = inverse_[i].lazyProduct(v.template segment<N>(N * i));  // unrolled
   }
 
   // Symmetric diagonal blocks and their inverses; false if one is not

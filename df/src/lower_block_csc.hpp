@@ -68,11 +68,13 @@ class LowerBlockCsc {
       for (int b = part_start_[part]; b < part_start_[part + 1]; ++b) {
         const auto xb = x.template segment<N>(N * b);
         Segment acc;
+        // lazyProduct: unrolled; a plain 12x12 product goes through Eigen's
+        // general matrix-vector kernel, whose set-up costs more than it.
         if (symmetric_diagonal) {
-          acc.noalias() = symmetric_diagonal[b] * xb;
+          acc.noalias() = symmetric_diagonal[b].lazyProduct(xb);
         } else {
           const Block d = diagonal(b).template selfadjointView<Eigen::Lower>();
-          acc.noalias() = d * xb;
+          acc.noalias() = d.lazyProduct(xb);
         }
         for (int k = below_start_[b]; k < below_start_[b + 1]; ++k) {
           if (!nonzero_[k]) continue;

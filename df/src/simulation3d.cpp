@@ -111,39 +111,87 @@ void Simulation3::make_friction_laws() {
   add(model_.default_joint, "the default joint");
 }
 
-std::vector<Vector12d> Simulation3::solve(double dt) {
+// Contacts share blocks. add(range) runs for each of kParts fixed ranges of
+// block columns in parallel; it goes over the contacts in order and adds
+// the terms of those that touch the range, which keeps what lands in its
+// columns of K and rows of F (Assembly3): every entry is summed in contact
+// order on any number of threads. A contact across two ranges is formed by
+// both (few are, blocks being numbered by position).
+template <class AddTerms>
+void Simulation3::for_each_range(Eigen::VectorXd& f, AddTerms&& add) {
+  constexpr int kParts = 8;
+  const int free_blocks = n_dofs_ / kDofs;
+  const int nb = static_cast<int>(model_.blocks.size());
+#pragma omp parallel for schedule(dynamic, 1) if (nb > df::parallel_grain())
+  for (int part = 0; part < kParts; ++part) {
+    Assembly3 range{dof_, k_lower_, f, kDofs * (free_blocks * part / kParts),
+                    kDofs * (free_blocks * (part + 1) / kParts)};
+    add(range);
+  }
+}
+
+void Simulation3::assemble(double dt) {
+  std::vector<std::pair<int, int>> pairs = contact_pairs(contacts_, dof_);
+  if (pairs != k_pairs_ || k_lower_.rows() != n_dofs_) {
+    k_lower_ = block_lower_pattern(dof_, n_dofs_, pairs);
+    k_pairs_ = std::move(pairs);
+  } else {
+    std::fill(k_lower_.valuePtr(), k_lower_.valuePtr() + k_lower_.nonZeros(), 0.0);
+  }
+  block_loads_ = Eigen::VectorXd::Zero(n_dofs_);
+  Assembly3 sys{dof_, k_lower_, block_loads_};
+  // Each block writes only its own diagonal block and F segment: the
+  // result does not depend on the number of threads.
+  const int nb = static_cast<int>(model_.blocks.size());
+#pragma omp parallel for schedule(static) if (nb > df::parallel_grain())
+  for (int b = 0; b < nb; ++b) {
+    if (dof_[b] < 0) continue;
+    const BlockGeometry3 g = block_geometry(model_.blocks[b]);
+    Matrix12d k = Matrix12d::Zero();
+    Vector12d f = Vector12d::Zero();
+    const Material3& material = model_.material_of(static_cast<std::size_t>(b));
+    add_inertia(g, material.density, velocity_[b], dt, k, f);
+    add_elasticity(g, material, stress_[b], k, f);
+    add_body_force(g, material.density, body_acceleration_, f);
+    add_point_terms(b, dt, g, k, f);
+    sys.add_k(b, b, k);
+    sys.add_f(b, f);
+  }
+  for_each_range(block_loads_, [this](Assembly3& range) {
+    for (const Contact3& c : contacts_)
+      if (range.owns(c.i) || range.owns(c.j)) add_contact_springs(c, c.state, 1.0, model_, range);
+  });
+}
+
+void Simulation3::swap_springs(const std::vector<std::pair<int, ContactState3>>& changed) {
+  for_each_range(block_loads_, [&](Assembly3& range) {
+    for (const auto& [k, before] : changed) {
+      const Contact3& c = contacts_[static_cast<std::size_t>(k)];
+      if (!range.owns(c.i) && !range.owns(c.j)) continue;
+      add_contact_springs(c, before, -1.0, model_, range);
+      add_contact_springs(c, c.state, 1.0, model_, range);
+    }
+  });
+}
+
+std::vector<Vector12d> Simulation3::solve(double dt, const std::vector<std::pair<int, ContactState3>>* changed) {
   std::vector<Vector12d> d(model_.blocks.size(), Vector12d::Zero());
   Eigen::VectorXd x;
   {
     df::ScopedTimer timer(timings_.assembly);
-    std::vector<std::pair<int, int>> pairs = contact_pairs(contacts_, dof_);
-    if (pairs != k_pairs_ || k_lower_.rows() != n_dofs_) {
-      k_lower_ = block_lower_pattern(dof_, n_dofs_, pairs);
-      k_pairs_ = std::move(pairs);
-    } else {
-      std::fill(k_lower_.valuePtr(), k_lower_.valuePtr() + k_lower_.nonZeros(), 0.0);
-    }
-    Assembly3 sys{dof_, k_lower_, Eigen::VectorXd::Zero(n_dofs_)};
-    // Each block writes only its own diagonal block and F segment: the
-    // result does not depend on the number of threads.
-    const int nb = static_cast<int>(model_.blocks.size());
-#pragma omp parallel for schedule(static) if (nb > df::parallel_grain())
-    for (int b = 0; b < nb; ++b) {
-      if (dof_[b] < 0) continue;
-      const BlockGeometry3 g = block_geometry(model_.blocks[b]);
-      Matrix12d k = Matrix12d::Zero();
-      Vector12d f = Vector12d::Zero();
-      const Material3& material = model_.material_of(static_cast<std::size_t>(b));
-      add_inertia(g, material.density, velocity_[b], dt, k, f);
-      add_elasticity(g, material, stress_[b], k, f);
-      add_body_force(g, material.density, body_acceleration_, f);
-      add_point_terms(b, dt, g, k, f);
-      sys.add_k(b, b, k);
-      sys.add_f(b, f);
-    }
-    // Contacts share blocks: added in contact order on one thread.
-    for (const Contact3& c : contacts_) add_contact_terms(c, model_, known_, sys);
-    x = std::move(sys.f);
+    // Swapping a spring costs twice adding it: after changes to more than a
+    // third of the contacts K is assembled afresh.
+    if (!changed || 3 * changed->size() > contacts_.size())
+      assemble(dt);
+    else
+      swap_springs(*changed);
+    // F: the blocks' loads, then every contact's in its current state (the
+    // anchors and friction change from one iterate to the next).
+    x = block_loads_;
+    for_each_range(x, [this](Assembly3& range) {
+      for (const Contact3& c : contacts_)
+        if (range.owns(c.i) || range.owns(c.j)) add_contact_loads(c, model_, known_, range);
+    });
   }
   {
     df::ScopedTimer timer(timings_.solve);
@@ -188,10 +236,14 @@ bool Simulation3::iterate(double dt, std::vector<Vector12d>& d, int& iterations)
   // checked once more, and the last iterate allowed is always a full solve.
   bool trial = true;
   const df::TrialScope trial_scope(*solver_);
+  // The contacts whose state the last update changed, with the state they
+  // were assembled in: the next iterate swaps only their springs.
+  std::vector<std::pair<int, ContactState3>> changed;
   while (iterations < model_.max_iterations) {
     ++iterations;
     solver_->set_trial(trial && iterations < model_.max_iterations);
-    d = solve(dt);
+    d = solve(dt, iterations == 1 ? nullptr : &changed);
+    changed.clear();
     const bool was_trial = solver_->last_was_trial();
     for (size_t b = 0; b < d.size(); ++b)
       if (dof_[b] < 0) d[b] = known_[b];
@@ -202,6 +254,7 @@ bool Simulation3::iterate(double dt, std::vector<Vector12d>& d, int& iterations)
       if (s != c.state) {
         settled = false;
         ++changes[k];
+        changed.emplace_back(static_cast<int>(k), c.state);
       }
       c.state = s;
     }

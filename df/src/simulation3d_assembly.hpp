@@ -12,6 +12,7 @@
 // it before: the upper half of K is its mirror.
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -35,17 +36,27 @@ Eigen::SparseMatrix<double> block_lower_pattern(const std::vector<int>& dof, int
 // K (lower triangle, pattern from block_lower_pattern) and F over the
 // unknowns of free blocks only (dof < 0: a fixed block, whose terms are
 // dropped: its increment is zero).
+//
+// An Assembly3 may own only the columns [first_owned, end_owned) of K and the same rows
+// of F and drop the rest, so that several add the same terms in parallel,
+// each into its own columns: every entry is then still summed in the order
+// the terms come, whatever the number of threads.
 struct Assembly3 {
   const std::vector<int>& dof;
   Eigen::SparseMatrix<double>& k;
-  Eigen::VectorXd f;
+  Eigen::VectorXd& f;
+  int first_owned = 0;                               // first unknown owned
+  int end_owned = std::numeric_limits<int>::max();   // one past the last
+
+  // Block b's column of K and rows of F are this assembly's to write.
+  bool owns(int b) const { return dof[b] >= first_owned && dof[b] < end_owned; }
 
   // K(block bi, block bj) += m. Only entries in the lower triangle are kept:
   // K is symmetric and its callers add the mirror add_k(bj, bi, m^T) too.
   // Different diagonal blocks may be added from different threads.
   void add_k(int bi, int bj, const Matrix12d& m) {
     const int row = dof[bi], col = dof[bj];
-    if (row < 0 || col < 0 || row < col) return;
+    if (row < 0 || col < first_owned || col >= end_owned || row < col) return;
     double* values = k.valuePtr();
     const int* outer = k.outerIndexPtr();
     if (row == col) {
@@ -58,23 +69,30 @@ struct Assembly3 {
       Eigen::Map<Vector12d>(values + outer[col + c] + (kDofs - c) + offset) += m.col(c);
   }
   void add_f(int b, const Vector12d& v) {
-    if (dof[b] >= 0) f.segment<kDofs>(dof[b]) += v;
+    if (owns(b)) f.segment<kDofs>(dof[b]) += v;
   }
-  // Penalty energy p/2 |s0 + A di + B dj|^2 (A, B with one row per spring).
-  // Only the blocks that land in the stored triangle are formed.
+  // Penalty energy p/2 |s0 + A di + B dj|^2 (A, B with one row per spring):
+  // its stiffness p [A B]^T [A B] (add_spring_k) and its load -p [A B]^T s0
+  // (add_spring_f). Only the blocks that land in the owned part of the
+  // stored triangle are formed.
   template <int R>
-  void add_spring(int i, int j, double p, const Eigen::Matrix<double, R, 1>& s0,
-                  const Eigen::Matrix<double, R, kDofs>& a, const Eigen::Matrix<double, R, kDofs>& b) {
-    if (dof[i] >= 0) add_k(i, i, p * a.transpose() * a);
-    if (dof[j] >= 0) add_k(j, j, p * b.transpose() * b);
+  void add_spring_k(int i, int j, double p, const Eigen::Matrix<double, R, kDofs>& a,
+                    const Eigen::Matrix<double, R, kDofs>& b) {
+    if (owns(i)) add_k(i, i, p * a.transpose() * a);
+    if (owns(j)) add_k(j, j, p * b.transpose() * b);
     if (dof[i] >= 0 && dof[j] >= 0) {
-      if (dof[i] > dof[j])
-        add_k(i, j, p * a.transpose() * b);
-      else
-        add_k(j, i, p * b.transpose() * a);
+      if (dof[i] > dof[j]) {
+        if (owns(j)) add_k(i, j, p * a.transpose() * b);
+      } else {
+        if (owns(i)) add_k(j, i, p * b.transpose() * a);
+      }
     }
-    add_f(i, -p * a.transpose() * s0);
-    add_f(j, -p * b.transpose() * s0);
+  }
+  template <int R>
+  void add_spring_f(int i, int j, double p, const Eigen::Matrix<double, R, 1>& s0,
+                    const Eigen::Matrix<double, R, kDofs>& a, const Eigen::Matrix<double, R, kDofs>& b) {
+    if (owns(i)) add_f(i, -p * a.transpose() * s0);
+    if (owns(j)) add_f(j, -p * b.transpose() * s0);
   }
 
  private:
@@ -98,10 +116,17 @@ struct Assembly3 {
   }
 };
 
-// The springs and friction forces of one contact in its current state
-// (nothing while open).
-// `known`: the increments of fixed blocks (a moving foundation), folded into
-// the springs' initial stretch; free blocks' entries are not read.
-void add_contact_terms(const Contact3& c, const Model3& m, const std::vector<Vector12d>& known, Assembly3& sys);
+// What one contact adds to the step system, in two parts, so that an
+// open-close iterate can keep K and swap only the springs of the contacts
+// whose state changed (Simulation3::assemble):
+// * the stiffness of its springs in `state` (nothing while open; the normal
+//   spring, and the shear springs while locked), times `sign` (+1 adds
+//   them, -1 takes them out again);
+// * its loads in its current state: the springs' initial stretch and the
+//   friction of a sliding contact. `known`: the increments of fixed blocks
+//   (a moving foundation), folded into the stretch; free blocks' entries
+//   are not read.
+void add_contact_springs(const Contact3& c, ContactState3 state, double sign, const Model3& m, Assembly3& sys);
+void add_contact_loads(const Contact3& c, const Model3& m, const std::vector<Vector12d>& known, Assembly3& sys);
 
 }  // namespace dda::df3

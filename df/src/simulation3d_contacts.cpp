@@ -239,7 +239,15 @@ std::vector<Contact3> detect_contacts3(const std::vector<Polyhedron>& blocks, co
   return out;
 }
 
-void add_contact_terms(const Contact3& c, const Model3& m, const std::vector<Vector12d>& known, Assembly3& sys) {
+void add_contact_springs(const Contact3& c, ContactState3 state, double sign, const Model3& m, Assembly3& sys) {
+  if (state == ContactState3::Open) return;
+  const ContactGeometry3& g = c.geo;
+  // Normal spring: K += p [en; gn][en; gn]^T.
+  sys.add_spring_k<1>(c.i, c.j, sign * m.normal_penalty, g.en.transpose(), g.gn.transpose());
+  if (state == ContactState3::Locked) sys.add_spring_k<2>(c.i, c.j, sign * m.shear_penalty, g.es, g.gs);
+}
+
+void add_contact_loads(const Contact3& c, const Model3& m, const std::vector<Vector12d>& known, Assembly3& sys) {
   if (c.state == ContactState3::Open) return;
   const ContactGeometry3& g = c.geo;
   // A fixed block's known increment is part of the spring's initial stretch.
@@ -247,14 +255,14 @@ void add_contact_terms(const Contact3& c, const Model3& m, const std::vector<Vec
   double dn0 = g.dn0;
   if (fi) dn0 += g.en.dot(known[c.i]);
   if (fj) dn0 += g.gn.dot(known[c.j]);
-  // Normal spring: K += p [en; gn][en; gn]^T, F -= p dn0 [en; gn].
-  sys.add_spring<1>(c.i, c.j, m.normal_penalty, Eigen::Matrix<double, 1, 1>(dn0), g.en.transpose(),
-                    g.gn.transpose());
+  // Normal spring: F -= p dn0 [en; gn].
+  sys.add_spring_f<1>(c.i, c.j, m.normal_penalty, Eigen::Matrix<double, 1, 1>(dn0), g.en.transpose(),
+                      g.gn.transpose());
   if (c.state == ContactState3::Locked) {
     Eigen::Vector2d s0 = shear_offset(c);
     if (fi) s0 += g.es * known[c.i];
     if (fj) s0 += g.gs * known[c.j];
-    sys.add_spring<2>(c.i, c.j, m.shear_penalty, s0, g.es, g.gs);
+    sys.add_spring_f<2>(c.i, c.j, m.shear_penalty, s0, g.es, g.gs);
     return;
   }
   // Sliding: the strength of the last iterate against the slip, on P of

@@ -231,7 +231,16 @@ class Simulation3 {
   StepInfo3 record(double dt, const std::vector<Vector12d>& d, double moved, int iterations, bool converged,
                    int cuts);
   // Solves K d = F for the current states; returns all blocks' increments.
-  std::vector<Vector12d> solve(double dt);
+  // `changed` (null on an attempt's first iterate): the contacts whose state
+  // changed since the last assembly, with the state they were assembled in.
+  std::vector<Vector12d> solve(double dt, const std::vector<std::pair<int, ContactState3>>* changed);
+  // K afresh and the blocks' loads (block_loads_), for the current states.
+  void assemble(double dt);
+  // K of the last assembly with the springs of `changed` swapped.
+  void swap_springs(const std::vector<std::pair<int, ContactState3>>& changed);
+  // add(range) for fixed ranges of K's columns, in parallel (Assembly3).
+  template <class AddTerms>
+  void for_each_range(Eigen::VectorXd& f, AddTerms&& add);
   void finish_step(const std::vector<Vector12d>& d, double dt);
   // One law per joint set, then the default joint's (friction_).
   void make_friction_laws();
@@ -269,6 +278,7 @@ class Simulation3 {
   // its symbolic analysis (simulation3d_assembly.hpp).
   std::unique_ptr<df::LinearSolver> solver_;
   Eigen::SparseMatrix<double> k_lower_;
+  Eigen::VectorXd block_loads_;  // F's block and point terms of the attempt's first iterate
   std::vector<std::pair<int, int>> k_pairs_;
   df::StepTimings timings_;
 };
