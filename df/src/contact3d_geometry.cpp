@@ -51,14 +51,13 @@ Bounds bounds(const Points& points, double margin) {
   return b;
 }
 
-struct Edge {
-  int v[2];
-  int faces[2] = {-1, -1};
-};
+using Edge = PolyEdge;
+
+}  // namespace
 
 // Each undirected edge once, with its two faces (a closed convex polyhedron
 // has exactly two per edge).
-std::vector<Edge> edges_of(const Polyhedron& p) {
+std::vector<PolyEdge> polyhedron_edges(const Polyhedron& p) {
   std::map<std::pair<int, int>, int> index;
   std::vector<Edge> edges;
   for (int f = 0; f < static_cast<int>(p.faces.size()); ++f) {
@@ -73,6 +72,8 @@ std::vector<Edge> edges_of(const Polyhedron& p) {
   }
   return edges;
 }
+
+namespace {
 
 // Foot of x on face f lies in the (convex, CCW from outside) polygon, with
 // `tol` metres of slack, so a vertex exactly above a face edge still counts.
@@ -202,8 +203,13 @@ ContactGeometry3 edge_edge_geometry(const Vec3& p1, const Vec3& p2, const Vec3& 
 }
 
 std::vector<ContactCandidate3> find_contacts3(const Polyhedron& a, const Polyhedron& b, const Contact3Options& opt) {
+  return find_contacts3(a, polyhedron_edges(a), b, polyhedron_edges(b), opt);
+}
+
+std::vector<ContactCandidate3> find_contacts3(const Polyhedron& a, const std::vector<PolyEdge>& edges_a,
+                                              const Polyhedron& b, const std::vector<PolyEdge>& edges_b,
+                                              const Contact3Options& opt) {
   std::vector<ContactCandidate3> out;
-  const auto edges_a = edges_of(a), edges_b = edges_of(b);
   vertex_face_contacts(a, edges_a, b, true, opt, out);
   vertex_face_contacts(b, edges_b, a, false, opt, out);
 

@@ -221,7 +221,10 @@ void Simulation3::prepare_input(double dt) {
 void Simulation3::detect() {
   contacts_ = detect_contacts3(model_.blocks, contacts_, model_.contact_reach, model_.contact_merge);
   const int sets = static_cast<int>(model_.joint_sets.size());
-  for (Contact3& c : contacts_) {
+  const int nc = static_cast<int>(contacts_.size());
+#pragma omp parallel for schedule(static) if (nc > 20 * df::parallel_grain())
+  for (int k = 0; k < nc; ++k) {  // each contact only itself
+    Contact3& c = contacts_[static_cast<std::size_t>(k)];
     const int set = contact_joint_set(model_.blocks, c);
     c.joint = set >= 0 && set < sets ? set : sets;
   }

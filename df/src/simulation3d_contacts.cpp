@@ -134,12 +134,13 @@ const Contact3& representative(const PointGroup& g) {
 
 // One contact per point of the pair (a, b), each with the state of the
 // previous contact at that point (nearest first, each passed on once).
-std::vector<Contact3> contacts_of_pair(const std::vector<Polyhedron>& blocks, int a, int b,
+std::vector<Contact3> contacts_of_pair(const std::vector<Polyhedron>& blocks,
+                                       const std::vector<std::vector<PolyEdge>>& edges, int a, int b,
                                        Contact3Options opt, double merge,
                                        const std::vector<const Contact3*>& previous_of_pair) {
   opt.alternative_faces = true;
   std::vector<PointGroup> groups;
-  for (const auto& cand : find_contacts3(blocks[a], blocks[b], opt)) {
+  for (const auto& cand : find_contacts3(blocks[a], edges[a], blocks[b], edges[b], opt)) {
     const Contact3 c = from_candidate(cand, a, b);
     PointGroup* home = nullptr;
     for (PointGroup& g : groups)
@@ -218,6 +219,9 @@ std::vector<Contact3> detect_contacts3(const std::vector<Polyhedron>& blocks, co
   // Each block's contacts go to a list of its own, joined in block order
   // below: pairs stay in (a, b) order, so the result is the same with any
   // number of threads.
+  std::vector<std::vector<PolyEdge>> edges(static_cast<std::size_t>(n));
+#pragma omp parallel for schedule(static)
+  for (int a = 0; a < n; ++a) edges[a] = polyhedron_edges(blocks[a]);
   std::vector<std::vector<Contact3>> found(static_cast<std::size_t>(n));
 #pragma omp parallel for schedule(dynamic, 8)
   for (int a = 0; a < n; ++a) {
@@ -227,7 +231,7 @@ std::vector<Contact3> detect_contacts3(const std::vector<Polyhedron>& blocks, co
       if (!within(box[a], box[b], reach)) continue;
       const auto it = by_pair.find(key(a, b));
       const auto& old = it == by_pair.end() ? none : it->second;
-      std::vector<Contact3> pair = contacts_of_pair(blocks, a, b, opt, merge, old);
+      std::vector<Contact3> pair = contacts_of_pair(blocks, edges, a, b, opt, merge, old);
       for (Contact3& c : pair) {
         if (c.state == ContactState3::Open) c.normal_force = 0;
         out.push_back(c);

@@ -48,7 +48,7 @@ bool same_discs(const std::vector<Disc>& a, const std::vector<Disc>& b) {
 
 DiscSetSpec set_spec(double dip, double dir, double kappa, SizeLaw size, double p32) {
   DiscSetSpec s;
-  s.name = "J";
+  s.name = std::string{"J"};  // not = "J": GCC 12 warns falsely (-Wrestrict, bug 105329) with -march=native
   s.dip_deg = dip;
   s.dip_direction_deg = dir;
   s.kappa = kappa;

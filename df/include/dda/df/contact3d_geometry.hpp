@@ -95,4 +95,17 @@ struct Contact3Options {
 // unless opt.alternative_faces.
 std::vector<ContactCandidate3> find_contacts3(const Polyhedron& a, const Polyhedron& b, const Contact3Options& opt);
 
+// An undirected edge of a polyhedron: its two vertices and its two faces.
+struct PolyEdge {
+  int v[2];
+  int faces[2] = {-1, -1};
+};
+// Each edge of a closed convex polyhedron once.
+std::vector<PolyEdge> polyhedron_edges(const Polyhedron& p);
+// find_contacts3 with the edges of a and b known (polyhedron_edges): a
+// detection over many pairs lists each block's edges once.
+std::vector<ContactCandidate3> find_contacts3(const Polyhedron& a, const std::vector<PolyEdge>& edges_a,
+                                              const Polyhedron& b, const std::vector<PolyEdge>& edges_b,
+                                              const Contact3Options& opt);
+
 }  // namespace dda::df3

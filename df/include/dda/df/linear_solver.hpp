@@ -12,10 +12,13 @@
 //    open-close iterate; across steps the last solution of the previous step
 //    times dt / dt_previous (d ~ v dt). It stops when the block-Jacobi
 //    preconditioned residual norm sqrt(r' M^-1 r) falls to
-//    PcgOptions::tolerance (1e-10) times that of the right-hand side. A solve
+//    PcgOptions::tolerance (1e-10) times that of the right-hand side, or
+//    PcgOptions::trial_tolerance (1e-6) for a trial solve (set_trial: an
+//    open-close iterate whose states still change). A solve
 //    that has not converged after PcgOptions::max_iterations is redone by
 //    CHOLMOD (counted in SolverStats::fallbacks).
-//  * "auto" (default): CHOLMOD below kAutoPcgBlocks blocks, PCG from there on.
+//  * "auto" (default): CHOLMOD below kAutoPcgBlocks blocks (3D:
+//    kAutoPcgBlocks3 free blocks), PCG from there on.
 //    Measured on brick walls under gravity (bench/bench_df.cpp, 2 cores):
 //    per settled step CHOLMOD wins at 30 blocks (0.30 vs 0.59 ms), PCG at
 //    100 (1.2 vs 4.5 ms) and 1,000 (8 vs 160 ms); on the first step from

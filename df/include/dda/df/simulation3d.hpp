@@ -43,12 +43,14 @@ struct Control3 {
   double min_dt_ratio = 1e-3;           // dt is never cut below this times dt
   // Linear solver (linear_solver.hpp): "cholmod", "pcg" (12x12 block-Jacobi
   // conjugate gradients, warm-started) or "auto": CHOLMOD below
-  // kAutoPcgBlocks3 free blocks, PCG from there on.
+  // kAutoPcgBlocks3 (80) free blocks, PCG from there on.
   std::string solver = "auto";
 };
 
-// Size from which the 3D "auto" solver uses PCG, in free blocks.
-constexpr int kAutoPcgBlocks3 = 200;
+// Size from which the 3D "auto" solver uses PCG, in free blocks. Measured on
+// the jointed cube of bench/bench_df3d.cpp from rest, one thread: at 82 free
+// blocks PCG takes 44 ms a step and CHOLMOD 128 ms.
+constexpr int kAutoPcgBlocks3 = 80;
 
 struct Model3 {
   std::vector<Polyhedron> blocks;  // convex; volume / centroid / second_moment are recomputed
