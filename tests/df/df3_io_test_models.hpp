@@ -7,6 +7,7 @@
 
 #include "dda/common/polyhedron_model.hpp"
 #include "dda/df/block3d.hpp"
+#include "dda/df/results3d.hpp"
 #include "df3_test_models.hpp"
 
 namespace dda::df3::testing {
@@ -21,6 +22,17 @@ inline PolyhedronModel incline_blocks(std::vector<ModelPoint3> points = {}) {
   m.sets = {{"slide", "plane"}};
   m.points = std::move(points);
   return m;
+}
+
+// An empty results file for `blocks`: frames every 10 steps, made-up
+// provenance.
+inline Results3 fresh_results3(const PolyhedronModel& blocks) {
+  Results3 r;
+  r.blocks = blocks;
+  r.source.provenance.scenario_path = "test";
+  r.source.blocks_path = "blocks3d.h5";
+  r.output.every = 10;
+  return r;
 }
 
 }  // namespace dda::df3::testing

@@ -46,14 +46,7 @@ Model3 incline_model(const PolyhedronModel& blocks) {
   return m;
 }
 
-Results3 fresh(const PolyhedronModel& blocks) {
-  Results3 r;
-  r.blocks = blocks;
-  r.source.provenance.scenario_path = "test";
-  r.source.blocks_path = "blocks3d.h5";
-  r.output.every = 10;
-  return r;
-}
+Results3 fresh(const PolyhedronModel& blocks) { return testing::fresh_results3(blocks); }
 
 fs::path temp(const std::string& name) { return fs::temp_directory_path() / ("dda_results3d_" + name); }
 

@@ -31,6 +31,7 @@
 #include "dda/common/error.hpp"
 #include "dda/df/results3d.hpp"
 #include "dda/df/simulation3d.hpp"
+#include "df3_io_test_models.hpp"
 #include "df3_test_models.hpp"
 
 namespace dda::df3 {
@@ -332,14 +333,7 @@ TEST(Simulation3Materials, ResumeWithZonesIsBitForBit) {
   PolyhedronModel blocks;
   blocks.blocks = model.blocks;
   for (Polyhedron& p : blocks.blocks) refresh_geometry(p), p.body = -1;
-  auto fresh = [&] {
-    Results3 r;
-    r.blocks = blocks;
-    r.source.provenance.scenario_path = "test";
-    r.source.blocks_path = "blocks3d.h5";
-    r.output.every = 10;
-    return r;
-  };
+  auto fresh = [&] { return testing::fresh_results3(blocks); };
   const std::string whole = (fs::temp_directory_path() / "dda_materials3_whole.h5").string();
   const std::string part = (fs::temp_directory_path() / "dda_materials3_part.h5").string();
   Simulation3 a(model);
