@@ -13,7 +13,7 @@
 //    times dt / dt_previous (d ~ v dt). It stops when the block-Jacobi
 //    preconditioned residual norm sqrt(r' M^-1 r) falls to
 //    PcgOptions::tolerance (1e-10) times that of the right-hand side, or
-//    PcgOptions::trial_tolerance (1e-6) for a trial solve (set_trial: an
+//    PcgOptions::trial_tolerance (1e-6; 1e-4 in 3D) for a trial solve (set_trial: an
 //    open-close iterate whose states still change). A solve
 //    that has not converged after PcgOptions::max_iterations is redone by
 //    CHOLMOD (counted in SolverStats::fallbacks).
