@@ -41,6 +41,7 @@
 #include <memory>
 #include <sstream>
 
+#include "dda/common/memory_policy.hpp"
 #include "dda/common/model_io.hpp"
 #include "dda/common/yaml_reader.hpp"
 #include "dda/df/import_ana.hpp"
@@ -215,6 +216,7 @@ void register_model(const std::string& label, const Model& model, int steps) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  dda::keep_freed_memory();  // memory_policy.hpp: large buffers are re-allocated every iterate
   // Our own flags first; the rest goes to Google Benchmark.
   std::string blocks_file, scenario;
   double dt = 1e-3;

@@ -8,10 +8,12 @@
 #include <iostream>
 
 #include "commands.hpp"
+#include "dda/common/memory_policy.hpp"
 #include "dda/common/error.hpp"
 #include "dda/common/provenance.hpp"
 
 int main(int argc, char** argv) {
+  dda::keep_freed_memory();  // memory_policy.hpp: large buffers are re-allocated every iterate
   CLI::App app{"dda: discontinuous deformation analysis of jointed rock.\n"
                "Pipeline: dl (lines) -> dc (blocks) -> df (forward run) -> history; "
                "`dda run` chains the stages a scenario asks for."};
