@@ -9,6 +9,7 @@
 #include <random>
 
 #include "df3_test_models.hpp"
+#include "forced_threads.hpp"
 #include "dda/df/block_system.hpp"
 #include "dda/df/broad_phase3d.hpp"
 #include "dda/df/simulation3d.hpp"
@@ -77,13 +78,9 @@ TEST(BroadPhase3, SameWithOneAndTwoThreads) {
 }
 
 std::vector<Polyhedron> run_stack(int threads, std::vector<Contact3>& contacts) {
-  const int saved = omp_get_max_threads(), saved_grain = df::parallel_grain();
-  omp_set_num_threads(threads);
-  df::set_parallel_grain(1);  // the parallel loops even on 36 blocks
+  const df::testing::ForcedThreads forced(threads);  // the parallel loops even on 36 blocks
   Simulation3 sim(testing::sliding_stack());
   for (int s = 0; s < 10; ++s) sim.step(2e-3);
-  omp_set_num_threads(saved);
-  df::set_parallel_grain(saved_grain);
   contacts = sim.contacts();
   return sim.blocks();
 }

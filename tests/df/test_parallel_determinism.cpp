@@ -8,6 +8,7 @@
 #include <random>
 
 #include "df_test_models.hpp"
+#include "forced_threads.hpp"
 #include "dda/df/broad_phase.hpp"
 #include "dda/df/simulation.hpp"
 
@@ -39,14 +40,10 @@ ModelInput wall(const std::string& solver) {
 // Vertices, then per block the end velocity and the stress (these show the
 // last bits of the step solution, which the positions may round away).
 std::vector<Polygon2> run(const Model& model, int threads, int steps) {
-  const int saved = omp_get_max_threads(), saved_grain = parallel_grain();
-  omp_set_num_threads(threads);
-  set_parallel_grain(1);
+  std::vector<Polygon2> out;
+  const testing::ForcedThreads forced(threads);
   Simulation sim(model);
   for (int s = 0; s < steps; ++s) sim.step();
-  omp_set_num_threads(saved);
-  set_parallel_grain(saved_grain);
-  std::vector<Polygon2> out;
   for (const BlockState& b : sim.blocks()) out.push_back(b.vertices);
   for (const BlockState& b : sim.blocks())
     out.push_back({b.velocity_end.segment<2>(0), b.velocity_end.segment<2>(2), b.velocity_end.segment<2>(4),

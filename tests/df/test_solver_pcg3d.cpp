@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "df3_test_models.hpp"
+#include "forced_threads.hpp"
 #include "dda/df/block_system.hpp"
 #include "dda/df/linear_solver.hpp"
 #include "dda/df/simulation3d.hpp"
@@ -121,19 +122,13 @@ TEST(SolverPcg3d, RejectsOtherBlockSizes) {
 }
 
 // The sliding stack (three layers of cubes on a 15 deg plane, friction 10
-// deg) run `steps` steps with the given solver.
-Simulation3 run_stack(const std::string& solver, int steps, int threads = 0) {
+// deg) run `steps` steps with the given solver on `threads` threads.
+Simulation3 run_stack(const std::string& solver, int steps, int threads) {
   Model3 m = testing::sliding_stack();
   m.control.solver = solver;
-  const int saved = omp_get_max_threads(), saved_grain = df::parallel_grain();
-  if (threads > 0) {
-    omp_set_num_threads(threads);
-    df::set_parallel_grain(1);  // the parallel loops even on 36 blocks
-  }
+  const df::testing::ForcedThreads forced(threads);  // the parallel loops even on 36 blocks
   Simulation3 sim(m);
   for (int s = 0; s < steps; ++s) sim.step(2e-3);
-  omp_set_num_threads(saved);
-  df::set_parallel_grain(saved_grain);
   return sim;
 }
 
