@@ -184,6 +184,14 @@ std::vector<Contact3> contacts_of_pair(const std::vector<Polyhedron>& blocks,
 
 std::vector<Contact3> detect_contacts3(const std::vector<Polyhedron>& blocks, const std::vector<Contact3>& previous,
                                        double reach, double merge) {
+  std::vector<Contact3> out;
+  detect_contacts3(blocks, previous, reach, merge, out);
+  return out;
+}
+
+void detect_contacts3(const std::vector<Polyhedron>& blocks, const std::vector<Contact3>& previous, double reach,
+                      double merge, std::vector<Contact3>& out) {
+  if (&out == &previous) throw InternalError("detect_contacts3: the output list is the previous one");
   Contact3Options opt;
   opt.reach = reach;
   // Slack of "the vertex projects onto the face" and "the crossing is inside
@@ -225,7 +233,7 @@ std::vector<Contact3> detect_contacts3(const std::vector<Polyhedron>& blocks, co
   std::vector<std::vector<Contact3>> found(static_cast<std::size_t>(n));
 #pragma omp parallel for schedule(dynamic, 8)
   for (int a = 0; a < n; ++a) {
-    std::vector<Contact3>& out = found[a];
+    std::vector<Contact3>& of_a = found[a];
     for (std::size_t p = first_pair[a]; p < first_pair[a + 1]; ++p) {
       const int b = pairs[p].second;
       if (!within(box[a], box[b], reach)) continue;
@@ -234,13 +242,17 @@ std::vector<Contact3> detect_contacts3(const std::vector<Polyhedron>& blocks, co
       std::vector<Contact3> pair = contacts_of_pair(blocks, edges, a, b, opt, merge, old);
       for (Contact3& c : pair) {
         if (c.state == ContactState3::Open) c.normal_force = 0;
-        out.push_back(c);
+        of_a.push_back(std::move(c));
       }
     }
   }
-  std::vector<Contact3> out;
-  for (const auto& list : found) out.insert(out.end(), list.begin(), list.end());
-  return out;
+  // Joined in block order, in parallel into out's existing elements (only
+  // the count's change is constructed or destroyed).
+  std::vector<std::size_t> first(static_cast<std::size_t>(n) + 1, 0);
+  for (int a = 0; a < n; ++a) first[a + 1] = first[a] + found[a].size();
+  out.resize(first[n]);
+#pragma omp parallel for schedule(static)
+  for (int a = 0; a < n; ++a) std::copy(found[a].begin(), found[a].end(), out.begin() + first[a]);
 }
 
 void add_contact_springs(const Contact3& c, ContactState3 state, double sign, const Model3& m, Assembly3& sys) {

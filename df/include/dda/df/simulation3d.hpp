@@ -151,6 +151,11 @@ struct StepInfo3 {
 // contact open without its shear spring, and the V4 wedge crept at phi = 30.
 std::vector<Contact3> detect_contacts3(const std::vector<Polyhedron>& blocks, const std::vector<Contact3>& previous,
                                        double reach, double merge);
+// The same into `out` (not `previous`), whose storage is reused: at 10,000
+// blocks the list is 250 MB, and a fresh one costs as much in page faults
+// as the copy into it.
+void detect_contacts3(const std::vector<Polyhedron>& blocks, const std::vector<Contact3>& previous, double reach,
+                      double merge, std::vector<Contact3>& out);
 
 // Open-close rule for one contact given the iterate's increments of its two
 // blocks (zero for a fixed block); returns the new state and updates anchor,
@@ -240,9 +245,16 @@ class Simulation3 {
   void assemble(double dt);
   // K of the last assembly with the springs of `changed` swapped.
   void swap_springs(const std::vector<std::pair<int, ContactState3>>& changed);
-  // add(range) for fixed ranges of K's columns, in parallel (Assembly3).
+  // add(range, contacts) for kRanges fixed ranges of K's columns, in
+  // parallel (Assembly3); `contacts` are the indices of the contacts with a
+  // block in the range (range_contacts_, in contact order).
   template <class AddTerms>
   void for_each_range(Eigen::VectorXd& f, AddTerms&& add);
+  // The range of K's columns block b's unknowns fall in; -1 for a fixed block.
+  int range_of(int b) const;
+  // Fills range_contacts_ for contacts_ (once per attempt: the iterates
+  // keep the list).
+  void index_ranges();
   void finish_step(const std::vector<Vector12d>& d, double dt);
   // One law per joint set, then the default joint's (friction_).
   void make_friction_laws();
@@ -267,6 +279,9 @@ class Simulation3 {
   std::vector<Vector12d> velocity_;
   std::vector<Vector6d> stress_;
   std::vector<Contact3> contacts_;
+  // Storage kept from step to step (see detect_contacts3): the list of two
+  // searches ago, and the contacts at the start of advance()'s step.
+  std::vector<Contact3> spare_contacts_, start_contacts_;
   std::vector<StepInfo3> log_;
   double dt_ = 0;   // current step of advance()
   double w0_ = 1;   // m, the reference length of the displacement limit
@@ -282,6 +297,8 @@ class Simulation3 {
   Eigen::SparseMatrix<double> k_lower_;
   Eigen::VectorXd block_loads_;  // F's block and point terms of the attempt's first iterate
   std::vector<std::pair<int, int>> k_pairs_;
+  static constexpr int kRanges = 8;  // fixed: it sets the summation order of K and F
+  std::vector<std::vector<int>> range_contacts_ = std::vector<std::vector<int>>(kRanges);
   df::StepTimings timings_;
 };
 
