@@ -18,6 +18,11 @@ Eigen::VectorXd LinearSolver::solve_step(const Eigen::SparseMatrix<double>& lowe
   return solve(lower, b);
 }
 
+Eigen::VectorXd LinearSolver::solve_step(const Eigen::SparseMatrix<double>& lower, const SpringCoupling& /*coupling*/,
+                                         const Eigen::VectorXd& b, double dt) {
+  return solve_step(lower, b, dt);
+}
+
 SolverStats LinearSolver::stats() const {
   SolverStats s;
   s.analyses = analyses();
@@ -27,6 +32,19 @@ SolverStats LinearSolver::stats() const {
 namespace {
 
 constexpr int kBlock3d = 12;  // unknowns per 3D block
+
+// The operator of a system given by its diagonal blocks (read from K's
+// stored lower triangle) and its coupling springs.
+struct DiagonalAndSprings12 {
+  const LowerBlockCsc<kBlock3d>& view;
+  const SpringCoupling& coupling;
+  int blocks() const { return view.blocks(); }
+  LowerBlockCsc<kBlock3d>::Block diagonal(int i) const { return view.diagonal(i); }
+  void multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y, const LowerBlockCsc<kBlock3d>::Block* symmetric) const {
+    view.multiply_diagonal(x, y, symmetric);
+    coupling.add_product(x, y);
+  }
+};
 
 class HybridSolver final : public LinearSolver {
  public:
@@ -83,6 +101,22 @@ class HybridSolver final : public LinearSolver {
       return direct_->solve(lower, b);
     }
     return iterate(pcg12_, view12_, b, dt, [&] { return direct_->solve(lower, b); });
+  }
+
+  // 3D with the coupling as springs: K's stored coupling blocks are read
+  // only by a direct solve.
+  Eigen::VectorXd solve_step(const Eigen::SparseMatrix<double>& lower, const SpringCoupling& coupling,
+                             const Eigen::VectorXd& b, double dt) override {
+    if (options_.block_size != kBlock3d || lower.rows() % kBlock3d != 0 ||
+        !use_pcg(static_cast<int>(lower.rows() / kBlock3d)))
+      return solve_step(lower, b, dt);
+    last_was_trial_ = false;
+    ++solves_;
+    if (!view12_.bind(lower, /*coupling_blocks=*/false)) {
+      ++fallbacks_;
+      return direct_->solve(lower, b);
+    }
+    return iterate(pcg12_, DiagonalAndSprings12{view12_, coupling}, b, dt, [&] { return direct_->solve(lower, b); });
   }
 
   Eigen::VectorXd solve_step(const BlockSystem& sys, double dt) override {

@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "dda/common/error.hpp"
 #include "dda/df/block_system.hpp"  // parallel_grain
 
 namespace dda::df {
@@ -28,10 +29,17 @@ class LowerBlockCsc {
   // Reads `lower` from now on (it must outlive the calls); the index is
   // rebuilt only when its pattern differs from the last one bound. False if
   // the matrix does not have the layout above (the view is then unusable).
-  bool bind(const Eigen::SparseMatrix<double>& lower) {
+  // `coupling_blocks`: multiply() will read the blocks off the diagonal
+  // (false: only multiply_diagonal() and diagonal() are used, and the scan
+  // for all-zero blocks, a read of all of K, is skipped).
+  bool bind(const Eigen::SparseMatrix<double>& lower, bool coupling_blocks = true) {
     matrix_ = &lower;
     if (!same_pattern(lower)) valid_ = build(lower);
-    if (valid_) find_nonzero_blocks();
+    coupling_blocks_ready_ = false;
+    if (valid_ && coupling_blocks) {
+      find_nonzero_blocks();
+      coupling_blocks_ready_ = true;
+    }
     return valid_;
   }
 
@@ -55,6 +63,7 @@ class LowerBlockCsc {
   // into its own copy of y; the copies are summed in part order, so the
   // result does not depend on the number of threads.
   void multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y, const Block* symmetric_diagonal) const {
+    if (!coupling_blocks_ready_) throw InternalError("LowerBlockCsc::multiply: bound without its coupling blocks");
     const double* values = matrix_->valuePtr();
     const int* outer = matrix_->outerIndexPtr();
     const int nb = blocks_;
@@ -97,6 +106,22 @@ class LowerBlockCsc {
       double sum = 0;
       for (int part = 0; part < kParts; ++part) sum += partial_(i, part);
       y[i] = sum;
+    }
+  }
+
+  // y = D x, D the block diagonal (symmetric_diagonal: as in multiply).
+  void multiply_diagonal(const Eigen::VectorXd& x, Eigen::VectorXd& y, const Block* symmetric_diagonal) const {
+    const int nb = blocks_;
+    y.resize(static_cast<Eigen::Index>(N) * nb);
+#pragma omp parallel for schedule(static) if (nb > parallel_grain())
+    for (int b = 0; b < nb; ++b) {
+      const auto xb = x.template segment<N>(N * b);
+      if (symmetric_diagonal) {
+        y.template segment<N>(N * b).noalias() = symmetric_diagonal[b].lazyProduct(xb);
+      } else {
+        const Block d = diagonal(b).template selfadjointView<Eigen::Lower>();
+        y.template segment<N>(N * b).noalias() = d.lazyProduct(xb);
+      }
     }
   }
 
@@ -182,6 +207,7 @@ class LowerBlockCsc {
   static constexpr int kParts = 8;  // fixed: it sets the summation order
   const Eigen::SparseMatrix<double>* matrix_ = nullptr;
   bool valid_ = false;
+  bool coupling_blocks_ready_ = false;  // bound for multiply(): nonzero_ is current
   int blocks_ = 0;
   Eigen::Index nonzeros_ = 0;
   std::vector<int> outer_;

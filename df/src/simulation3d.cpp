@@ -2,6 +2,7 @@
 // iteration, and the end-of-step update (simulation3d.hpp).
 #include "dda/df/simulation3d.hpp"
 
+#include "contact_coupling3.hpp"
 #include "simulation3d_assembly.hpp"
 #include "dda/common/error.hpp"
 #include "dda/df/runaway.hpp"
@@ -80,7 +81,8 @@ df::PcgOptions pcg_options3() {
 
 Simulation3::Simulation3(Model3 model)
     : model_(std::move(model)),
-      solver_(df::make_solver(model_.control.solver, kAutoPcgBlocks3, pcg_options3())) {
+      solver_(df::make_solver(model_.control.solver, kAutoPcgBlocks3, pcg_options3())),
+      coupling_(std::make_unique<ContactCoupling3>()) {
   const size_t n = model_.blocks.size();
   if (model_.fixed.empty()) model_.fixed.assign(n, false);
   if (model_.fixed.size() != n) throw std::invalid_argument("Model3: fixed must have one entry per block");
@@ -107,6 +109,10 @@ Simulation3::Simulation3(Model3 model)
     throw InputError("3D control: dt, max_displacement_ratio and min_dt_ratio must be positive (min_dt_ratio at "
                      "most 1), total_time and steps not negative.");
 }
+
+Simulation3::~Simulation3() = default;
+Simulation3::Simulation3(Simulation3&&) noexcept = default;
+Simulation3& Simulation3::operator=(Simulation3&&) noexcept = default;
 
 void Simulation3::make_friction_laws() {
   auto add = [&](const df::JointProperties& joint, const std::string& what) {
@@ -225,7 +231,8 @@ std::vector<Vector12d> Simulation3::solve(double dt, const std::vector<std::pair
   }
   {
     df::ScopedTimer timer(timings_.solve);
-    x = solver_->solve_step(k_lower_, x, dt);  // InternalError if K is not positive definite
+    coupling_->set_states(contacts_);
+    x = solver_->solve_step(k_lower_, *coupling_, x, dt);  // InternalError if K is not positive definite
     ++timings_.solves;
   }
   for (size_t b = 0; b < d.size(); ++b)
@@ -264,6 +271,7 @@ void Simulation3::detect() {
 bool Simulation3::iterate(double dt, std::vector<Vector12d>& d, int& iterations) {
   prepare_input(dt);
   index_ranges();
+  coupling_->set_springs(contacts_, dof_, model_.normal_penalty, model_.shear_penalty);
   std::vector<int> changes(contacts_.size(), 0);  // state changes of each contact in this step
   iterations = 0;
   // Trial solves (linear_solver.hpp) while the states change; an iterate

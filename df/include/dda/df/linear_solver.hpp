@@ -34,6 +34,18 @@ namespace dda::df {
 
 class BlockSystem;
 
+// K's coupling blocks (those off the block diagonal) given by the penalty
+// springs that make them, for iterative solvers: a product through the
+// springs reads fewer bytes than K's stored 12 x 12 blocks (3D: a closed
+// contact's normal spring is two 12-vectors, against a 144-value block per
+// pair of blocks, and the product is bound by memory traffic).
+class SpringCoupling {
+ public:
+  virtual ~SpringCoupling() = default;
+  // y += (K - blockdiag(K)) x, the same bit for bit on any number of threads.
+  virtual void add_product(const Eigen::VectorXd& x, Eigen::VectorXd& y) const = 0;
+};
+
 // Counters over the life of a solver.
 struct SolverStats {
   long solves = 0;            // systems solved
@@ -60,6 +72,10 @@ class LinearSolver {
   // laid out in 12x12 blocks, see lower_block_csc.hpp). The default calls
   // solve.
   virtual Eigen::VectorXd solve_step(const Eigen::SparseMatrix<double>& lower, const Eigen::VectorXd& b, double dt);
+  // The same, where `coupling` gives K's off-diagonal blocks as springs
+  // (`lower` holds all of K, for direct solves). The default ignores it.
+  virtual Eigen::VectorXd solve_step(const Eigen::SparseMatrix<double>& lower, const SpringCoupling& coupling,
+                                     const Eigen::VectorXd& b, double dt);
   // How many symbolic analyses were done (pattern reuse diagnostics).
   virtual int analyses() const = 0;
   virtual SolverStats stats() const;

@@ -196,9 +196,14 @@ struct Simulation3State {
   df::LinearSolver::WarmStart solver_warm_start;  // PCG's start vector (empty for CHOLMOD)
 };
 
+class ContactCoupling3;  // df/src/contact_coupling3.hpp
+
 class Simulation3 {
  public:
   explicit Simulation3(Model3 model);
+  ~Simulation3();
+  Simulation3(Simulation3&&) noexcept;
+  Simulation3& operator=(Simulation3&&) noexcept;
 
   // One step of length dt (s), accepted whatever happens; vertices,
   // velocities, stresses and contact anchors are updated at the end.
@@ -297,6 +302,9 @@ class Simulation3 {
   Eigen::SparseMatrix<double> k_lower_;
   Eigen::VectorXd block_loads_;  // F's block and point terms of the attempt's first iterate
   std::vector<std::pair<int, int>> k_pairs_;
+  // K's coupling blocks as the contacts' springs, for PCG (set once per
+  // attempt, states once per iterate).
+  std::unique_ptr<ContactCoupling3> coupling_;
   static constexpr int kRanges = 8;  // fixed: it sets the summation order of K and F
   std::vector<std::vector<int>> range_contacts_ = std::vector<std::vector<int>>(kRanges);
   df::StepTimings timings_;
