@@ -1,5 +1,10 @@
 #include "dda/common/memory_policy.hpp"
 
+// A standard header first: it brings in the C library's <features.h>, which
+// defines __GLIBC__. Without it the test below was always false and
+// keep_freed_memory() compiled to nothing.
+#include <cstddef>
+
 #if defined(__GLIBC__)
 #include <malloc.h>
 #endif
