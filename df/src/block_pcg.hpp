@@ -9,7 +9,9 @@
 //   <N x N matrix> diagonal(int i) const;   // its lower triangle is read
 //   void multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y,
 //                 const Eigen::Matrix<double, N, N>* symmetric_diagonal) const;
-// (BlockSystem for 2D, LowerBlockCsc<12> for 3D).
+// (BlockSystem for 2D, LowerBlockCsc<12> for 3D), and optionally
+//   void multiply_rows(x, y, symmetric_diagonal, int first, int last) const;
+// the rows [first, last) of the product on the calling thread (multiply_dot).
 //
 // Determinism: every vector loop runs over fixed chunks of blocks; the dot
 // products add the chunks' partial sums serially in chunk order, so the
@@ -79,10 +81,7 @@ class BlockJacobiPcg {
     for (int it = 0; it < max_iterations_; ++it) {
       if (rz <= target) return true;
       if (!std::isfinite(rz)) return false;
-      op.multiply(p_, q_, diagonal_.data());
-      const double pq = chunked(nb, [&](int lo, int hi) {
-        return p_.segment(N * lo, N * (hi - lo)).dot(q_.segment(N * lo, N * (hi - lo)));
-      });
+      const double pq = multiply_dot(op);
       if (!(pq > 0)) return false;  // breakdown: not SPD in floating point
       const double alpha = rz / pq;
       const double rz_new = chunked(nb, [&](int lo, int hi) {
@@ -137,6 +136,29 @@ class BlockJacobiPcg {
       inverse_[i] = llt.solve(Block::Identity());
     }
     return bad == 0;
+  }
+
+  // q = op p, and p . q (summed in chunk order). An operator that can
+  // multiply a range of block rows on the calling thread (multiply_rows:
+  // BlockSystem) does both in one parallel loop, each chunk's dot right
+  // after its rows, while they are in cache: one pass over p and q and one
+  // barrier fewer per iteration, with the same numbers. (solve() calls
+  // op.multiply() once before, as multiply_rows() asks.)
+  template <class Op>
+  double multiply_dot(const Op& op) {
+    const int nb = op.blocks();
+    auto dot = [&](int lo, int hi) {
+      return p_.segment(N * lo, N * (hi - lo)).dot(q_.segment(N * lo, N * (hi - lo)));
+    };
+    if constexpr (requires { op.multiply_rows(p_, q_, diagonal_.data(), 0, 0); }) {
+      return chunked(nb, [&](int lo, int hi) {
+        op.multiply_rows(p_, q_, diagonal_.data(), lo, hi);
+        return dot(lo, hi);
+      });
+    } else {
+      op.multiply(p_, q_, diagonal_.data());
+      return chunked(nb, dot);
+    }
   }
 
   // Runs body(lo, hi) over chunks of blocks in parallel and returns the sum

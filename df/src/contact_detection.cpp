@@ -125,10 +125,8 @@ std::vector<ContactCandidate> find_contacts(const std::vector<Polygon2>& blocks,
                                             const std::function<bool(int, int, int)>& previous) {
   // Pairs are independent (a vertex-vertex contact involves the two blocks
   // of one pair only), so they are scanned in parallel into per-thread
-  // lists. Threads take contiguous ranges of pairs in order and the lists
-  // are joined in thread order, so the sort sees the same sequence (and
-  // leaves any equal keys in the same order) whatever the thread count.
-  // `previous` is only read.
+  // lists, which are then sorted into one (see the end). `previous` is only
+  // read.
   const double d0 = search_distance;
   const int npairs = static_cast<int>(pairs.size());
   const int nblocks = static_cast<int>(blocks.size());
@@ -184,14 +182,29 @@ std::vector<ContactCandidate> find_contacts(const std::vector<Polygon2>& blocks,
       for (const auto& vp : vertex_pairs) resolve_vertex_vertex(blocks, vp[0], vp[1], vp[2], vp[3], d0, previous, out);
     }
   }
-  std::vector<ContactCandidate> out;
-  std::size_t total = 0;
-  for (const auto& f : found) total += f.size();
-  out.reserve(total);
-  for (const auto& f : found) out.insert(out.end(), f.begin(), f.end());
-  std::sort(out.begin(), out.end(), [](const ContactCandidate& x, const ContactCandidate& y) {
-    return std::tie(x.vblock, x.vertex, x.eblock, x.edge) < std::tie(y.vblock, y.vertex, y.eblock, y.edge);
-  });
+  // Sorted by (vblock, vertex, eblock, edge): bucketed by vertex block, then
+  // each block's few candidates sorted, in parallel (one serial sort of all
+  // of them cost a millisecond a step on 10k blocks). Candidates with the
+  // same key are equal in every field (a key comes from one pair of blocks;
+  // it comes twice only when a vertex near both ends of a short edge
+  // resolves both vertex-vertex pairs to that edge), so the result is the
+  // one a full sort gives.
+  std::vector<int> start(static_cast<std::size_t>(nblocks) + 1, 0);
+  for (const auto& f : found)
+    for (const ContactCandidate& c : f) ++start[c.vblock + 1];
+  for (int b = 0; b < nblocks; ++b) start[b + 1] += start[b];
+  std::vector<ContactCandidate> out(static_cast<std::size_t>(start[nblocks]));
+  {
+    std::vector<int> fill(start.begin(), start.end() - 1);
+    for (const auto& f : found)
+      for (const ContactCandidate& c : f) out[fill[c.vblock]++] = c;
+  }
+#pragma omp parallel for schedule(static) if (nblocks > parallel_grain())
+  for (int b = 0; b < nblocks; ++b)
+    std::sort(out.begin() + start[b], out.begin() + start[b + 1],
+              [](const ContactCandidate& x, const ContactCandidate& y) {
+                return std::tie(x.vertex, x.eblock, x.edge) < std::tie(y.vertex, y.eblock, y.edge);
+              });
   return out;
 }
 

@@ -14,6 +14,17 @@
 #include "dda/df/contact_detection.hpp"
 
 namespace dda::df {
+namespace {
+
+// to = from, element by element into the storage `to` already has: copying
+// into a fresh vector would fault its tens of MB in again on every step.
+void copy_contacts(const std::vector<Contact>& from, std::vector<Contact>& to, bool parallel) {
+  to.resize(from.size());
+#pragma omp parallel for schedule(static) if (parallel)
+  for (std::size_t k = 0; k < from.size(); ++k) to[k] = from[k];
+}
+
+}  // namespace
 
 Simulation::Simulation(Model model, std::unique_ptr<LinearSolver> solver)
     : model_(std::move(model)), solver_(std::move(solver)) {
@@ -77,19 +88,22 @@ void Simulation::detect_contacts() {
   const int nb = model_.block_count();
   const double d0 = model_.search_distance;
   std::vector<Box2> boxes(nb);
-  std::vector<Polygon2> polys(nb);
+  polygons_.resize(nb);
+#pragma omp parallel for schedule(static) if (nb > parallel_grain())
   for (int i = 0; i < nb; ++i) {
     boxes[i] = bounding_box(blocks_[i].vertices);
-    polys[i] = blocks_[i].vertices;
+    polygons_[i] = blocks_[i].vertices;  // into the vertex list of the last step: no allocation
   }
   // Contacts of the last step by (vertex block, vertex, edge block[, edge]):
   // a vertex that slides onto the next edge of the same block keeps its state.
   const ContactIndex last(contacts_);
   auto previous = [&last](int vb, int v, int eb) { return last.by_vertex(vb, v, eb) >= 0; };
-  const auto candidates = find_contacts(polys, broad_phase(boxes, 0.5 * d0), d0, previous);
+  const auto candidates = find_contacts(polygons_, broad_phase(boxes, 0.5 * d0), d0, previous);
 
-  // Each contact reads only the blocks and the last step: in parallel.
-  std::vector<Contact> next(candidates.size());
+  // Each contact reads only the blocks and the last step: in parallel. The
+  // list is built in work_ (free between steps) and swapped in.
+  std::vector<Contact>& next = work_;
+  next.resize(candidates.size());
 #pragma omp parallel for schedule(static) if (nb > parallel_grain())
   for (std::size_t k = 0; k < candidates.size(); ++k) {
     const ContactCandidate& cand = candidates[k];
@@ -139,7 +153,7 @@ void Simulation::detect_contacts() {
     c.length = tributary_length(bi.vertices, c.vertex, c.geo.tangent);
     next[k] = std::move(c);
   }
-  contacts_ = std::move(next);
+  contacts_.swap(next);
 }
 
 void Simulation::assemble(double dt, const std::vector<Contact>& contacts) {
@@ -271,7 +285,10 @@ bool Simulation::open_close(double dt, std::vector<Contact>& contacts, Eigen::Ve
 }
 
 double Simulation::max_vertex_displacement(const Eigen::VectorXd& d) const {
+  // A maximum does not depend on the order it is taken in: in parallel. (A
+  // NaN displacement is skipped in any order: std::max(worst, NaN) is worst.)
   double worst = 0;
+#pragma omp parallel for schedule(static) reduction(max : worst) if (model_.block_count() > parallel_grain())
   for (int i = 0; i < model_.block_count(); ++i) {
     const Vector6d di = d.segment<kDofs>(kDofs * i);
     const Vec2& c = blocks_[i].geometry.centroid;
@@ -287,7 +304,8 @@ const StepRecord& Simulation::advance(double max_dt) {
     if (!started_) settle();
     detect_contacts();
   }
-  const std::vector<Contact> start = contacts_;
+  // contacts_ stays the start of the step (an attempt thrown away starts
+  // again from it); each attempt works on a copy in work_.
   const Control& ctl = model_.control;
   const double dt_min = ctl.min_dt_ratio * ctl.dt;
   StepRecord rec;
@@ -295,9 +313,9 @@ const StepRecord& Simulation::advance(double max_dt) {
   for (;;) {
     const bool shortened = max_dt < dt_;
     const double dt = std::min(dt_, max_dt);
-    std::vector<Contact> work = start;
+    copy_contacts(contacts_, work_, model_.block_count() > parallel_grain());
     int iterations = 0;
-    const bool settled = open_close(dt, work, d, iterations);
+    const bool settled = open_close(dt, work_, d, iterations);
     const double moved = max_vertex_displacement(d);
     check_runaway(d, moved, dt, dt <= dt_min * (1 + 1e-9));
     const bool too_far = moved > max_step_displacement_;
@@ -312,7 +330,7 @@ const StepRecord& Simulation::advance(double max_dt) {
     rec.open_close_iterations = iterations;
     rec.converged = settled;
     rec.max_displacement = moved;
-    accept(dt, d, work, rec);
+    accept(dt, d, work_, rec);
     // Easy steps let dt grow back gradually toward the user's dt.
     if (!shortened && rec.dt_cuts == 0) dt_ = std::min(ctl.dt, dt_ * 1.1);
     break;
@@ -331,35 +349,55 @@ void Simulation::accept(double dt, const Eigen::VectorXd& d, std::vector<Contact
   for (std::size_t k = 0; k < load_pos_.size(); ++k) move(model_.loads[k].block, load_pos_[k]);
   for (std::size_t k = 0; k < measurement_pos_.size(); ++k) move(model_.measurements[k].block, measurement_pos_[k]);
 
-  double kinetic = 0, elastic = 0;
-  for (int i = 0; i < model_.block_count(); ++i) {
+  // Each block moves only itself: in parallel. The energies are summed
+  // afterwards, serially in block order, so the sums do not depend on the
+  // thread count.
+  const int nb = model_.block_count();
+  std::vector<double> twice_kinetic(nb), twice_strain_density(nb);  // v1' M v1, sigma' E^-1 sigma
+#pragma omp parallel for schedule(static) if (nb > parallel_grain())
+  for (int i = 0; i < nb; ++i) {
     BlockState& b = blocks_[i];
     const Vector6d di = d.segment<kDofs>(kDofs * i);
     const int mat = model_.block_material[i];
     const Vector6d v1 = 2.0 / dt * di - b.velocity;  // end velocity, constant acceleration
     b.acceleration = (v1 - b.velocity) / dt;
-    kinetic += 0.5 * v1.dot(mass_matrix(b.geometry, model_.materials[mat].density) * v1);
+    twice_kinetic[i] = v1.dot(mass_matrix(b.geometry, model_.materials[mat].density) * v1);
     for (Vec2& v : b.vertices) v = move_point(b.geometry.centroid, di, v);
     b.geometry = block_geometry(b.vertices);
     b.stress = rotate_stress(b.stress, di[2]) + emat_[mat] * di.tail<3>();
-    elastic += 0.5 * b.geometry.area * b.stress.dot(emat_[mat].ldlt().solve(b.stress));
+    twice_strain_density[i] = b.stress.dot(emat_[mat].ldlt().solve(b.stress));
     b.velocity = model_.control.dynamic * v1;
     b.velocity_end = v1;
   }
+  double kinetic = 0, elastic = 0;
+  for (int i = 0; i < nb; ++i) {
+    kinetic += 0.5 * twice_kinetic[i];
+    elastic += 0.5 * blocks_[i].geometry.area * twice_strain_density[i];
+  }
 
-  for (Contact& c : contacts) {
+  // Each contact advances only its own friction state: in parallel (the
+  // counts are order-free).
+  int open = 0, sliding = 0, locked = 0;
+#pragma omp parallel for schedule(static) reduction(+ : open, sliding, locked) if (nb > parallel_grain())
+  for (std::size_t k = 0; k < contacts.size(); ++k) {
+    Contact& c = contacts[k];
     const FrictionLaw& law = *friction_[c.joint];
     law.advance({c.normal_force, c.slip_velocity, c.length, dt, c.bonded,
                  c.state == ContactState::Sliding ? c.slip_sign : 0},
                 c.friction);
     if (c.state == ContactState::Sliding) c.friction.slip += c.slip_velocity * dt;
     switch (c.state) {
-      case ContactState::Open: ++rec.open; break;
-      case ContactState::Sliding: ++rec.sliding; break;
-      case ContactState::Locked: ++rec.locked; break;
+      case ContactState::Open: ++open; break;
+      case ContactState::Sliding: ++sliding; break;
+      case ContactState::Locked: ++locked; break;
     }
   }
-  contacts_ = std::move(contacts);
+  rec.open += open;
+  rec.sliding += sliding;
+  rec.locked += locked;
+  // A swap, not a move: the caller's vector keeps the old list's memory for
+  // the next step (see work_).
+  contacts_.swap(contacts);
   time_ += dt;
   ++step_count_;
   rec.step = step_count_;

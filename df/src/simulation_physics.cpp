@@ -2,6 +2,7 @@
 // (members of Simulation kept out of simulation.cpp, which is shared).
 #include <Eigen/Cholesky>
 #include <cmath>
+#include <vector>
 
 #include "dda/df/simulation.hpp"
 #include "dda/df/viscous_boundary.hpp"
@@ -66,22 +67,7 @@ void Simulation::init_physics() {
   // Stored energy of the starting state; the work sums start at zero.
   EnergyRecord e;
   e.time = time_;
-  for (int i = 0; i < model_.block_count(); ++i) {
-    const BlockState& b = blocks_[i];
-    const int mat = model_.block_material[i];
-    e.kinetic += 0.5 * b.velocity.dot(mass_matrix(b.geometry, model_.materials[mat].density) * b.velocity);
-    e.elastic += strain_energy(b, emat_[mat]);
-  }
-  for (const Contact& c : contacts_) {
-    if (c.state == ContactState::Open) continue;
-    e.contact += c.normal_force * c.normal_force / (2 * model_.joint_pn[c.joint]);
-    if (c.state == ContactState::Locked) e.contact += c.shear_force * c.shear_force / (2 * model_.joint_ps[c.joint]);
-  }
-  for (std::size_t k = 0; k < model_.fixed_points.size(); ++k) {
-    const FixedPoint& f = model_.fixed_points[k];
-    e.fixed += 0.5 * *f.penalty * (fixed_point_target(f, fixed_anchor_[k], time_) - fixed_pos_[k]).squaredNorm();
-  }
-  for (std::size_t k = 0; k < bolts_.size(); ++k) e.bolts += bolt_energy(model_.bolts[k], bolts_[k]);
+  store_energy(e);
   energy_start_ = e;
   energy_log_.assign(1, e);
 }
@@ -114,12 +100,22 @@ void Simulation::before_accept(double dt, const Eigen::VectorXd& d, const std::v
   // without contacts the change of kinetic energy equals the work done.
   EnergyRecord e = energy_log_.back();
   auto di = [&](int i) { return Vector6d(d.segment<kDofs>(kDofs * i)); };
-  for (int i = 0; i < model_.block_count(); ++i) {
+  // The mass products per block in parallel; the sums serially, in block
+  // order (the same on any number of threads).
+  const int nb = model_.block_count();
+  std::vector<double> twice_kinetic(nb);  // v1' M v1
+#pragma omp parallel for schedule(static) if (nb > parallel_grain())
+  for (int i = 0; i < nb; ++i) {
     const BlockState& b = blocks_[i];
     const Material& mat = model_.materials[model_.block_material[i]];
     const Vector6d v1 = 2.0 / dt * di(i) - b.velocity;
+    twice_kinetic[i] = v1.dot(mass_matrix(b.geometry, mat.density) * v1);
+  }
+  for (int i = 0; i < nb; ++i) {
+    const BlockState& b = blocks_[i];
+    const Material& mat = model_.materials[model_.block_material[i]];
     const double k = model_.control.dynamic;
-    e.damping += (1 - k * k) * 0.5 * v1.dot(mass_matrix(b.geometry, mat.density) * v1);
+    e.damping += (1 - k * k) * 0.5 * twice_kinetic[i];
     e.gravity_work += b.geometry.area * mat.density * model_.gravity.dot(di(i).head<2>());
   }
   for (std::size_t k = 0; k < model_.loads.size(); ++k) {
@@ -178,12 +174,27 @@ void Simulation::after_accept(double /*dt*/) {
   // Stored energy at the end of the step.
   EnergyRecord& e = energy_log_.back();
   e.time = time_;
+  store_energy(e);
+  e.residual =
+      e.input() - (e.stored() - energy_start_.stored()) - e.friction - e.damping - e.breakage - e.radiation;
+}
+
+void Simulation::store_energy(EnergyRecord& e) const {
   e.kinetic = e.elastic = e.contact = e.fixed = e.bolts = 0;
-  for (int i = 0; i < model_.block_count(); ++i) {
+  // The per-block terms in parallel; the sums serially, in block order (the
+  // same on any number of threads).
+  const int nb = model_.block_count();
+  std::vector<double> twice_kinetic(nb), strain(nb);  // v' M v, strain energy
+#pragma omp parallel for schedule(static) if (nb > parallel_grain())
+  for (int i = 0; i < nb; ++i) {
     const BlockState& b = blocks_[i];
     const int mat = model_.block_material[i];
-    e.kinetic += 0.5 * b.velocity.dot(mass_matrix(b.geometry, model_.materials[mat].density) * b.velocity);
-    e.elastic += strain_energy(b, emat_[mat]);
+    twice_kinetic[i] = b.velocity.dot(mass_matrix(b.geometry, model_.materials[mat].density) * b.velocity);
+    strain[i] = strain_energy(b, emat_[mat]);
+  }
+  for (int i = 0; i < nb; ++i) {
+    e.kinetic += 0.5 * twice_kinetic[i];
+    e.elastic += strain[i];
   }
   for (const Contact& c : contacts_) {
     if (c.state == ContactState::Open) continue;
@@ -195,8 +206,6 @@ void Simulation::after_accept(double /*dt*/) {
     e.fixed += 0.5 * *f.penalty * (fixed_point_target(f, fixed_anchor_[k], time_) - fixed_pos_[k]).squaredNorm();
   }
   for (std::size_t k = 0; k < bolts_.size(); ++k) e.bolts += bolt_energy(model_.bolts[k], bolts_[k]);
-  e.residual =
-      e.input() - (e.stored() - energy_start_.stored()) - e.friction - e.damping - e.breakage - e.radiation;
 }
 
 }  // namespace dda::df

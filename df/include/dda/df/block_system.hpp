@@ -94,6 +94,13 @@ class BlockSystem {
   // per block, which is faster). Parallel over block rows; the result does
   // not depend on the thread count.
   void multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y, const Matrix6d* symmetric_diagonal = nullptr) const;
+  // Block rows [first, last) of the same product, on the calling thread
+  // alone (y sized already), for a caller that shares the rows out itself
+  // and works on each range while it is in cache (block_pcg.hpp). Reads the
+  // pattern as multiply() leaves it: call that first if couplings may have
+  // been added outside the declared pattern.
+  void multiply_rows(const Eigen::VectorXd& x, Eigen::VectorXd& y, const Matrix6d* symmetric_diagonal, int first,
+                     int last) const;
   // Builds a block system from the lower triangle of a matrix of 6x6 blocks.
   static BlockSystem from_lower(const Eigen::SparseMatrix<double>& lower, const Eigen::VectorXd& rhs);
 
@@ -101,7 +108,7 @@ class BlockSystem {
   static std::uint64_t key(int i, int j) {
     return (static_cast<std::uint64_t>(i) << 32) | static_cast<std::uint32_t>(j);
   }
-  void build_pattern(std::vector<std::pair<int, int>> pairs);  // (i, j), i > j
+  void build_pattern(const std::vector<std::pair<int, int>>& pairs);  // (i, j), i > j; any order, repeats allowed
   void build_rounds();
   void merge_extra() const;
   int slot(int i, int j) const;  // i > j; -1 if not in the pattern

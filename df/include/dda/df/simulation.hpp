@@ -150,6 +150,9 @@ class Simulation {
   void assemble_physics(double dt);
   void before_accept(double dt, const Eigen::VectorXd& d, const std::vector<Contact>& contacts);
   void after_accept(double dt);
+  // The stored energies (kinetic, elastic, contact, fixed points, bolts) of
+  // the current state into e.
+  void store_energy(EnergyRecord& e) const;
   void settle();
   void check_runaway(const Eigen::VectorXd& d, double moved, double dt, bool at_min_dt) const;
   // Dashpot matrix of a viscous boundary edge in the current configuration,
@@ -163,6 +166,14 @@ class Simulation {
   std::vector<Matrix3d> emat_;                          // one per material
   std::vector<BlockState> blocks_;
   std::vector<Contact> contacts_;                       // of the last accepted step
+  // Scratch, not state (dead between steps): the list detect_contacts()
+  // builds before swapping it into contacts_, then the contacts of the
+  // attempt in progress (advance() copies contacts_ into it). Kept so that a
+  // list of tens of MB is neither allocated nor faulted in again every step.
+  std::vector<Contact> work_;
+  // Scratch of detect_contacts(): the current polygons, kept so their
+  // vertex lists are not allocated again every step.
+  std::vector<Polygon2> polygons_;
   std::vector<Vec2> fixed_anchor_, fixed_pos_;          // fixed points: target and current
   std::vector<Vec2> load_pos_, measurement_pos_;
   std::vector<StepRecord> log_;
