@@ -170,11 +170,9 @@ Simulation3 run_stack(const std::string& solver, int steps, int threads) {
   return sim;
 }
 
-// A raft of 3 x 4 touching 1 m cubes on a fixed slab dipping 20 deg,
-// friction 10 deg: every cube slides as the block of V1 (CASES.md),
-// s = g (sin a - cos a tan phi) t^2 / 2, pushing on its neighbours through
-// face contacts, which couple the blocks in K. Run `solver` for t seconds.
-std::vector<double> raft_slides(const std::string& solver, double t, long* pcg_solves = nullptr) {
+// A raft of 3 x 4 touching 1 m cubes on a fixed slab dipping 20 deg, with
+// friction `friction_deg`, solved by `solver`.
+Model3 raft(double friction_deg, const std::string& solver) {
   const Eigen::Matrix3d r = testing::plane_rotation(20, 90);
   Model3 m;
   m.blocks.push_back(testing::box({-1, -1, -1}, {8, 5, 0}, r));
@@ -185,12 +183,19 @@ std::vector<double> raft_slides(const std::string& solver, double t, long* pcg_s
       m.fixed.push_back(false);
     }
   m.materials = {{2600, 1e10, 0.25}};
-  m.default_joint.friction_deg = 10;
+  m.default_joint.friction_deg = friction_deg;
   m.normal_penalty = m.shear_penalty = 1e9;
   m.contact_reach = 0.01;
   m.control.solver = solver;
-  Simulation3 sim(m);
-  const Vec3 dip = r * Vec3(1, 0, 0);
+  return m;
+}
+
+// With friction 10 deg every cube slides as the block of V1 (CASES.md),
+// s = g (sin a - cos a tan phi) t^2 / 2, pushing on its neighbours through
+// face contacts, which couple the blocks in K. Run for t seconds.
+std::vector<double> raft_slides(const std::string& solver, double t, long* pcg_solves = nullptr) {
+  Simulation3 sim(raft(10, solver));
+  const Vec3 dip = testing::plane_rotation(20, 90) * Vec3(1, 0, 0);
   std::vector<Vec3> c0;
   for (const Polyhedron& p : sim.blocks()) c0.push_back(p.centroid);
   const double dt = 1e-3;
@@ -230,21 +235,7 @@ TEST(SolverPcg3d, SlidingRaftFollowsV1AsWithCholmod) {
 TEST(SolverPcg3d, HeldRaftAsWithCholmod) {
   std::vector<Vec3> start;
   auto run = [&start](const std::string& solver, int* locked) {
-    const Eigen::Matrix3d r = testing::plane_rotation(20, 90);
-    Model3 m;
-    m.blocks.push_back(testing::box({-1, -1, -1}, {8, 5, 0}, r));
-    m.fixed.push_back(true);
-    for (int y = 0; y < 3; ++y)
-      for (int x = 0; x < 4; ++x) {
-        m.blocks.push_back(testing::box(Vec3(x, y, 0), Vec3(x + 1, y + 1, 1), r));
-        m.fixed.push_back(false);
-      }
-    m.materials = {{2600, 1e10, 0.25}};
-    m.default_joint.friction_deg = 30;
-    m.normal_penalty = m.shear_penalty = 1e9;
-    m.contact_reach = 0.01;
-    m.control.solver = solver;
-    Simulation3 sim(m);
+    Simulation3 sim(raft(30, solver));
     start.clear();
     for (const Polyhedron& p : sim.blocks()) start.push_back(p.centroid);
     for (int s = 0; s < 100; ++s) sim.step(1e-3);
