@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "dda/df/block_system.hpp"  // parallel_grain
+#include "fixed_parts.hpp"
 
 namespace dda::df3 {
 
@@ -45,15 +46,11 @@ void ContactCoupling3::set_states(const std::vector<Contact3>& contacts) {
 void ContactCoupling3::add_product(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
   using Row = Eigen::Map<const Vector12d>;
   using Rows = Eigen::Map<const Eigen::Matrix<double, 2, kDofs>>;
-  const Eigen::Index n = y.size();
   const long m = static_cast<long>(contact_.size());
-  partial_.resize(n, kParts);
   constexpr auto kOpen = static_cast<std::uint8_t>(ContactState3::Open);
   constexpr auto kLocked = static_cast<std::uint8_t>(ContactState3::Locked);
-#pragma omp parallel for schedule(dynamic, 1) if (m > 20 * df::parallel_grain())
-  for (int part = 0; part < kParts; ++part) {
-    auto yp = partial_.col(part);
-    yp.setZero();
+  const bool parallel = m > 20 * df::parallel_grain();
+  df::sum_in_fixed_parts(kParts, partial_, y, /*accumulate=*/true, parallel, [&](int part, auto yp) {
     for (long s = m * part / kParts; s < m * (part + 1) / kParts; ++s) {
       if (state_[static_cast<std::size_t>(s)] == kOpen) continue;
       const int fi = first_i_[static_cast<std::size_t>(s)], fj = first_j_[static_cast<std::size_t>(s)];
@@ -62,24 +59,17 @@ void ContactCoupling3::add_product(const Eigen::VectorXd& x, Eigen::VectorXd& y)
       // spring row a (block i) and b (block j).
       const double* normal = normal_.data() + s * kNormal;
       const Row en(normal), gn(normal + kDofs);
-      yp.segment<kDofs>(fi).noalias() += (normal_penalty_ * gn.dot(xj)) * en;
-      yp.segment<kDofs>(fj).noalias() += (normal_penalty_ * en.dot(xi)) * gn;
+      yp.template segment<kDofs>(fi).noalias() += (normal_penalty_ * gn.dot(xj)) * en;
+      yp.template segment<kDofs>(fj).noalias() += (normal_penalty_ * en.dot(xi)) * gn;
       if (state_[static_cast<std::size_t>(s)] == kLocked) {
         const double* shear = shear_.data() + s * kShear;
         const Rows es(shear), gs(shear + 2 * kDofs);
         const Eigen::Vector2d sj = shear_penalty_ * (gs * xj), si = shear_penalty_ * (es * xi);
-        yp.segment<kDofs>(fi).noalias() += es.transpose() * sj;
-        yp.segment<kDofs>(fj).noalias() += gs.transpose() * si;
+        yp.template segment<kDofs>(fi).noalias() += es.transpose() * sj;
+        yp.template segment<kDofs>(fj).noalias() += gs.transpose() * si;
       }
     }
-  }
-  // y += the parts, in part order.
-#pragma omp parallel for schedule(static) if (m > 20 * df::parallel_grain())
-  for (Eigen::Index r = 0; r < n; ++r) {
-    double sum = 0;
-    for (int part = 0; part < kParts; ++part) sum += partial_(r, part);
-    y[r] += sum;
-  }
+  });
 }
 
 }  // namespace dda::df3

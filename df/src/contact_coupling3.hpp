@@ -32,9 +32,8 @@ class ContactCoupling3 final : public df::SpringCoupling {
   // The contacts' states, for the same contacts as set_springs.
   void set_states(const std::vector<Contact3>& contacts);
 
-  // The springs are cut into kParts fixed ranges, each adding into its own
-  // copy of y; the copies are added in part order, so the result does not
-  // depend on the number of threads.
+  // The springs are cut into kParts fixed ranges (sum_in_fixed_parts), so
+  // the result does not depend on the number of threads.
   void add_product(const Eigen::VectorXd& x, Eigen::VectorXd& y) const override;
 
  private:

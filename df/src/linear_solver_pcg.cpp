@@ -95,28 +95,18 @@ class HybridSolver final : public LinearSolver {
       return direct_->solve(lower, b);
     }
     if (bs == kDofs) return solve_step(BlockSystem::from_lower(lower, b), dt);
-    ++solves_;
-    if (!view12_.bind(lower)) {  // not laid out in 12x12 blocks: a direct solve
-      ++fallbacks_;
-      return direct_->solve(lower, b);
-    }
-    return iterate(pcg12_, view12_, b, dt, [&] { return direct_->solve(lower, b); });
+    return solve_blocks12(lower, nullptr, b, dt);
   }
 
   // 3D with the coupling as springs: K's stored coupling blocks are read
-  // only by a direct solve.
+  // only by a direct solve. (2D ignores the coupling.)
   Eigen::VectorXd solve_step(const Eigen::SparseMatrix<double>& lower, const SpringCoupling& coupling,
                              const Eigen::VectorXd& b, double dt) override {
     if (options_.block_size != kBlock3d || lower.rows() % kBlock3d != 0 ||
         !use_pcg(static_cast<int>(lower.rows() / kBlock3d)))
       return solve_step(lower, b, dt);
     last_was_trial_ = false;
-    ++solves_;
-    if (!view12_.bind(lower, /*coupling_blocks=*/false)) {
-      ++fallbacks_;
-      return direct_->solve(lower, b);
-    }
-    return iterate(pcg12_, DiagonalAndSprings12{view12_, coupling}, b, dt, [&] { return direct_->solve(lower, b); });
+    return solve_blocks12(lower, &coupling, b, dt);
   }
 
   Eigen::VectorXd solve_step(const BlockSystem& sys, double dt) override {
@@ -128,6 +118,21 @@ class HybridSolver final : public LinearSolver {
 
  private:
   bool use_pcg(int blocks) const { return mode_ == Mode::Pcg || blocks >= pcg_blocks_; }
+
+  // PCG on a 3D system in 12x12 blocks: the product reads K's coupling
+  // blocks, or `coupling` if given. A matrix not laid out in such blocks is
+  // solved directly.
+  Eigen::VectorXd solve_blocks12(const Eigen::SparseMatrix<double>& lower, const SpringCoupling* coupling,
+                                 const Eigen::VectorXd& b, double dt) {
+    ++solves_;
+    if (!view12_.bind(lower, /*coupling_blocks=*/coupling == nullptr)) {
+      ++fallbacks_;
+      return direct_->solve(lower, b);
+    }
+    auto direct = [&] { return direct_->solve(lower, b); };
+    if (coupling) return iterate(pcg12_, DiagonalAndSprings12{view12_, *coupling}, b, dt, direct);
+    return iterate(pcg12_, view12_, b, dt, direct);
+  }
 
   // PCG from the warm start: the last solution, times dt / dt_last across
   // steps (d ~ v dt); `direct` solves when PCG does not converge.

@@ -17,6 +17,7 @@
 
 #include "dda/common/error.hpp"
 #include "dda/df/block_system.hpp"  // parallel_grain
+#include "fixed_parts.hpp"
 
 namespace dda::df {
 
@@ -59,21 +60,16 @@ class LowerBlockCsc {
   // symmetric. Each stored block is read once, for both its product and its
   // transpose's: the product is bound by memory traffic, and K's blocks
   // (100 MB at 10,000 blocks) do not stay in cache from one half to the
-  // other. The block columns are cut into kParts fixed ranges, each adding
-  // into its own copy of y; the copies are summed in part order, so the
-  // result does not depend on the number of threads.
+  // other. The block columns are cut into kParts fixed ranges
+  // (sum_in_fixed_parts), so the result does not depend on the number of
+  // threads.
   void multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y, const Block* symmetric_diagonal) const {
     if (!coupling_blocks_ready_) throw InternalError("LowerBlockCsc::multiply: bound without its coupling blocks");
     const double* values = matrix_->valuePtr();
     const int* outer = matrix_->outerIndexPtr();
     const int nb = blocks_;
-    const Eigen::Index n = static_cast<Eigen::Index>(N) * nb;
-    y.resize(n);
-    partial_.resize(n, kParts);
-#pragma omp parallel for schedule(dynamic, 1) if (nb > parallel_grain())
-    for (int part = 0; part < kParts; ++part) {
-      auto yp = partial_.col(part);
-      yp.setZero();
+    y.resize(static_cast<Eigen::Index>(N) * nb);
+    sum_in_fixed_parts(kParts, partial_, y, /*accumulate=*/false, nb > parallel_grain(), [&](int part, auto yp) {
       for (int b = part_start_[part]; b < part_start_[part + 1]; ++b) {
         const auto xb = x.template segment<N>(N * b);
         Segment acc;
@@ -99,14 +95,7 @@ class LowerBlockCsc {
         }
         yp.template segment<N>(N * b) += acc;
       }
-    }
-    // y = sum of the parts, in part order.
-#pragma omp parallel for schedule(static) if (nb > parallel_grain())
-    for (Eigen::Index i = 0; i < n; ++i) {
-      double sum = 0;
-      for (int part = 0; part < kParts; ++part) sum += partial_(i, part);
-      y[i] = sum;
-    }
+    });
   }
 
   // y = D x, D the block diagonal (symmetric_diagonal: as in multiply).
