@@ -82,7 +82,13 @@ void Simulation::settle() {
     if (moved <= tolerance) break;
   }
   settling_ = false;
-  for (int i = 0; i < nb; ++i) blocks_[i].velocity = blocks_[i].velocity_end = initial[i];
+  // The relaxation's pseudo-steps leave no motion behind: the run starts
+  // from the initial velocities, without acceleration (the receivers record
+  // it at t = 0).
+  for (int i = 0; i < nb; ++i) {
+    blocks_[i].velocity = blocks_[i].velocity_end = initial[i];
+    blocks_[i].acceleration.setZero();
+  }
   log_.clear();
   for (auto& h : histories_) h.clear();
   record_measurements();

@@ -85,5 +85,20 @@ TEST(V1SoftRock, StaysAtThirtyFiveDegrees) {
             1e-6);  // no creep after t = 0
 }
 
+TEST(V1SoftRock, RunStartsAtRestAfterTheInitialEquilibrium) {
+  // The relaxation into equilibrium takes pseudo-steps (settle.cpp) whose
+  // motion must not leak into the run: the first sample of a receiver, at
+  // t = 0, shows no velocity and no acceleration ("0 at the start",
+  // MeasurementSample). Before the fix the slider started with the
+  // acceleration of the last pseudo-step.
+  Simulation sim = v1_model(1e9, 2e-4, 29);
+  sim.step();
+  ASSERT_GT(sim.settle_iterations(), 0);
+  const MeasurementSample& first = sim.histories()[0].front();
+  EXPECT_EQ(first.time, 0.0);
+  EXPECT_EQ(first.velocity, Vec2(0, 0));
+  EXPECT_EQ(first.acceleration, Vec2(0, 0));
+}
+
 }  // namespace
 }  // namespace dda::df
