@@ -103,19 +103,31 @@ void add_contact_springs(const Contact& c, const ContactLaw& law, double weight,
   if (c.state == ContactState::Locked) add_spring_matrix(sys, c.vblock, c.eblock, weight * law.ps, g.es, g.gs);
 }
 
-void add_contact_forces(const Contact& c, const ContactLaw& law, double dt, BlockSystem& sys) {
+double friction_force(const Contact& c, const ContactLaw& law, double dt) {
+  if (c.state != ContactState::Sliding) return 0.0;
+  return c.slip_sign * law.friction->strength(friction_input(c, dt), c.friction);
+}
+
+void add_contact_forces(const Contact& c, const ContactLaw& law, double friction, double weight, BlockSystem& sys) {
   if (c.state == ContactState::Open) return;
   const ContactGeometry& g = c.geo;
-  add_spring_force(sys, c.vblock, c.eblock, law.pn, g.dn0, g.en, g.gn);
+  add_spring_force(sys, c.vblock, c.eblock, weight * law.pn, g.dn0, g.en, g.gn);
   if (c.state == ContactState::Locked) {
-    add_spring_force(sys, c.vblock, c.eblock, law.ps, g.ds0, g.es, g.gs);
+    add_spring_force(sys, c.vblock, c.eblock, weight * law.ps, g.ds0, g.es, g.gs);
   } else {
     // Sliding: friction from the normal force of the previous iterate, on P
     // against its slip and the reverse on the edge under P.
-    const double f = c.slip_sign * law.friction->strength(friction_input(c, dt), c.friction);
-    sys.rhs(c.vblock) -= f * g.es;  // es = T_i(P)^T t
-    sys.rhs(c.eblock) -= f * g.gc;  // gc = -T_j(Pc)^T t
+    add_friction_change(c, weight * friction, sys);
   }
+}
+
+void add_friction_change(const Contact& c, double change, BlockSystem& sys) {
+  sys.rhs(c.vblock) -= change * c.geo.es;  // es = T_i(P)^T t
+  sys.rhs(c.eblock) -= change * c.geo.gc;  // gc = -T_j(Pc)^T t
+}
+
+void add_contact_forces(const Contact& c, const ContactLaw& law, double dt, BlockSystem& sys) {
+  add_contact_forces(c, law, friction_force(c, law, dt), 1.0, sys);
 }
 
 void add_contact_terms(const Contact& c, const ContactLaw& law, double dt, BlockSystem& sys) {

@@ -105,6 +105,64 @@ TEST(ContactTerms, SpringsAndForcesAddUpAndSpringsComeOutAgain) {
   EXPECT_GT((Eigen::MatrixXd(whole.full()) - k).norm(), 1e-3 * k.norm());  // the shear spring did count
 }
 
+TEST(ContactTerms, ForcesUpdatedInPlaceMatchForcesFormedAfresh) {
+  // Between open-close iterates F is updated, not formed again
+  // (Simulation::reassemble): a sliding contact whose normal force changed
+  // adds the change of its friction, and a contact that changed state takes
+  // its old forces out and puts its new ones in. F must come out as if
+  // formed afresh, to rounding.
+  const Polygon2 base = rectangle(-1, -1, 3, 1), top = rectangle(0.2, -0.0005, 1, 0.5);
+  Contact c;
+  c.vblock = 1;
+  c.vertex = 0;
+  c.eblock = 0;
+  c.edge = 2;
+  c.geo = contact_geometry(top, block_geometry(top).centroid, base, block_geometry(base).centroid, 0, 2, 0.4);
+  c.geo.ds0 = 2e-5;  // the locked spring is stretched: its force differs from the sliding friction
+  c.state = ContactState::Sliding;
+  c.slip_sign = -1;
+  c.normal_force = 3e5;
+  JointProperties joint;
+  joint.friction_deg = 30;
+  const auto friction = make_friction_law(joint);
+  const ContactLaw law{1e9, 4e8, 0, friction.get(), 1e-9};
+  const double dt = 1e-3;
+  auto system = [] {
+    BlockSystem sys;
+    sys.reset(2, {{1, 0}});
+    return sys;
+  };
+  auto relative = [](const BlockSystem& a, const BlockSystem& b) {
+    return (a.rhs() - b.rhs()).norm() / b.rhs().norm();
+  };
+
+  // The friction as it goes into F: against the slip, tan(phi) N.
+  const double f1 = friction_force(c, law, dt);
+  EXPECT_NEAR(f1, -std::tan(deg2rad(30)) * 3e5, 1e-9 * 3e5);
+
+  // The normal force changes: only the friction changes.
+  BlockSystem updated = system();
+  add_contact_forces(c, law, f1, 1.0, updated);
+  c.normal_force = 2.5e5;
+  const double f2 = friction_force(c, law, dt);
+  add_friction_change(c, f2 - f1, updated);
+  BlockSystem fresh = system();
+  add_contact_forces(c, law, dt, fresh);
+  EXPECT_LE(relative(updated, fresh), 1e-14);
+  EXPECT_GT(relative(system(), fresh), 0.5);  // F is not empty: the comparison can fail
+
+  // Sliding -> locked: out with the sliding forces, in with the locked ones.
+  Contact locked = c;
+  locked.state = ContactState::Locked;
+  add_contact_forces(c, law, f2, -1.0, updated);
+  add_contact_forces(locked, law, friction_force(locked, law, dt), 1.0, updated);
+  BlockSystem fresh_locked = system();
+  add_contact_forces(locked, law, dt, fresh_locked);
+  EXPECT_EQ(friction_force(locked, law, dt), 0.0);
+  EXPECT_LE(relative(updated, fresh_locked), 1e-14);
+  EXPECT_GT(relative(fresh, fresh_locked), 1e-3);  // the two states' forces differ
+}
+
 TEST(EntranceEdge, VertexEntersThroughTopEdge) {
   // Block j: unit square; corner Q = (1,1). Block i: a diamond whose lowest
   // vertex P = (0.999, 0.9995) is 0.5 mm below the top face and 1 mm left of

@@ -134,11 +134,15 @@ class Simulation {
   const StepRecord& advance(double max_dt);
   void detect_contacts();
   int joint_of(int vblock, int vertex, int eblock, int edge) const;
-  void assemble(double dt, const std::vector<Contact>& contacts);
+  // The step's system afresh; friction[k] gets the friction force of
+  // contact k as assembled (friction_force).
+  void assemble(double dt, const std::vector<Contact>& contacts, std::vector<double>& friction);
   // The system of the next open-close iterate from the last one: `before`
   // holds the contacts whose state changed since, as they were assembled
-  // (index, contact).
-  void reassemble(double dt, const std::vector<Contact>& contacts, const std::vector<std::pair<int, Contact>>& before);
+  // (index, contact), and changed[k] is their position in it (-1 for the
+  // others); `friction` is as assemble() leaves it, and is kept up to date.
+  void reassemble(double dt, const std::vector<Contact>& contacts, const std::vector<std::pair<int, Contact>>& before,
+                  const std::vector<int>& changed, std::vector<double>& friction);
   bool open_close(double dt, std::vector<Contact>& contacts, Eigen::VectorXd& d, int& iterations);
   void accept(double dt, const Eigen::VectorXd& d, std::vector<Contact>& contacts, StepRecord& rec);
   void record_measurements();
@@ -179,7 +183,6 @@ class Simulation {
   std::vector<StepRecord> log_;
   std::vector<std::vector<MeasurementSample>> histories_;
   BlockSystem system_;
-  Eigen::VectorXd base_rhs_;  // F of the last assemble() without its contact terms
   StepTimings timings_;
   double time_ = 0;
   double dt_ = 0;
