@@ -224,6 +224,28 @@ TEST(EntranceEdge, VertexBesideAShortEdgeIsNotAPenetrationOfIt) {
     EXPECT_GT(c.dn, -1e-6) << c.vblock << "/" << c.vertex << " on " << c.eblock << "/" << c.edge;
 }
 
+TEST(EntranceEdge, VertexNearBothEndsOfAShortEdgeMakesOneContact) {
+  // Block 0: unit square with its top-right corner chamfered by a 7 mm edge
+  // (edge 2, from (1, 0.995) to (0.995, 1)). Block 1: a diamond whose lowest
+  // vertex P = (0.999, 0.999) sits 2.1 mm outside the chamfer, 4.1 mm from
+  // both of its ends. With a 10 mm search distance both ends pair with P as
+  // vertex-vertex contacts, and both resolve to P against the chamfer (the
+  // square's faces x = 1 and y = 1 are implausible: P is beside them, not in
+  // the square). Expected: that contact once, dn = 0.003 / sqrt(2). Twice
+  // would put its springs into K twice.
+  const Vec2 p(0.999, 0.999);
+  const std::vector<Polygon2> blocks{
+      {{0, 0}, {1, 0}, {1, 0.995}, {0.995, 1}, {0, 1}},
+      {p, p + Vec2(0.5, 0.1), p + Vec2(0.6, 0.6), p + Vec2(0.1, 0.5)}};
+  const auto found = find_contacts(blocks, {{0, 1}}, 0.01);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_EQ(found[0].vblock, 1);
+  EXPECT_EQ(found[0].vertex, 0);
+  EXPECT_EQ(found[0].eblock, 0);
+  EXPECT_EQ(found[0].edge, 2);
+  EXPECT_NEAR(found[0].dn, 0.003 / std::sqrt(2.0), 1e-12);
+}
+
 TEST(BroadPhase, SameAsBruteForce) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> pos(0, 50), size(0.2, 3);
