@@ -66,11 +66,10 @@ TEST(ContactGeometry, LinearisedDistanceMatchesMovedGeometry) {
   }
 }
 
-TEST(ContactTerms, SpringsAndForcesAddUpAndSpringsComeOutAgain) {
-  // The open-close iteration assembles a contact's springs and forces in
-  // two parts, and swaps the springs of a contact that changed state by
-  // taking out the old ones (weight -1): the system must come out as if
-  // assembled afresh, to rounding.
+// The terms tests' contact: the lower-left corner of a block (1) pressed
+// 0.5 mm into the top face of a larger one (0), its shear reference at 0.4
+// of that face.
+Contact corner_on_face() {
   const Polygon2 base = rectangle(-1, -1, 3, 1), top = rectangle(0.2, -0.0005, 1, 0.5);
   Contact c;
   c.vblock = 1;
@@ -78,12 +77,27 @@ TEST(ContactTerms, SpringsAndForcesAddUpAndSpringsComeOutAgain) {
   c.eblock = 0;
   c.edge = 2;
   c.geo = contact_geometry(top, block_geometry(top).centroid, base, block_geometry(base).centroid, 0, 2, 0.4);
+  return c;
+}
+
+// An empty system of the two blocks, their coupling declared.
+BlockSystem two_block_system() {
+  BlockSystem sys;
+  sys.reset(2, {{1, 0}});
+  return sys;
+}
+
+TEST(ContactTerms, SpringsAndForcesAddUpAndSpringsComeOutAgain) {
+  // The open-close iteration assembles a contact's springs and forces in
+  // two parts, and swaps the springs of a contact that changed state by
+  // taking out the old ones (weight -1): the system must come out as if
+  // assembled afresh, to rounding.
+  Contact c = corner_on_face();
   c.state = ContactState::Locked;
   const auto friction = make_friction_law(JointProperties{});
   const ContactLaw law{1e9, 4e8, 0, friction.get(), 1e-9};
   auto system = [] {
-    BlockSystem sys;
-    sys.reset(2, {{1, 0}});
+    BlockSystem sys = two_block_system();
     for (int i = 0; i < 2; ++i) sys.diagonal(i) = 1e6 * Matrix6d::Identity();
     return sys;
   };
@@ -111,13 +125,7 @@ TEST(ContactTerms, ForcesUpdatedInPlaceMatchForcesFormedAfresh) {
   // adds the change of its friction, and a contact that changed state takes
   // its old forces out and puts its new ones in. F must come out as if
   // formed afresh, to rounding.
-  const Polygon2 base = rectangle(-1, -1, 3, 1), top = rectangle(0.2, -0.0005, 1, 0.5);
-  Contact c;
-  c.vblock = 1;
-  c.vertex = 0;
-  c.eblock = 0;
-  c.edge = 2;
-  c.geo = contact_geometry(top, block_geometry(top).centroid, base, block_geometry(base).centroid, 0, 2, 0.4);
+  Contact c = corner_on_face();
   c.geo.ds0 = 2e-5;  // the locked spring is stretched: its force differs from the sliding friction
   c.state = ContactState::Sliding;
   c.slip_sign = -1;
@@ -127,11 +135,7 @@ TEST(ContactTerms, ForcesUpdatedInPlaceMatchForcesFormedAfresh) {
   const auto friction = make_friction_law(joint);
   const ContactLaw law{1e9, 4e8, 0, friction.get(), 1e-9};
   const double dt = 1e-3;
-  auto system = [] {
-    BlockSystem sys;
-    sys.reset(2, {{1, 0}});
-    return sys;
-  };
+  const auto system = two_block_system;
   auto relative = [](const BlockSystem& a, const BlockSystem& b) {
     return (a.rhs() - b.rhs()).norm() / b.rhs().norm();
   };
@@ -163,6 +167,18 @@ TEST(ContactTerms, ForcesUpdatedInPlaceMatchForcesFormedAfresh) {
   EXPECT_GT(relative(fresh, fresh_locked), 1e-3);  // the two states' forces differ
 }
 
+// The narrow phase found exactly one contact: vertex `vertex` of block
+// `vblock` against edge `edge` of block `eblock`, at signed distance dn.
+void expect_one_contact(const std::vector<ContactCandidate>& found, int vblock, int vertex, int eblock, int edge,
+                        double dn) {
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_EQ(found[0].vblock, vblock);
+  EXPECT_EQ(found[0].vertex, vertex);
+  EXPECT_EQ(found[0].eblock, eblock);
+  EXPECT_EQ(found[0].edge, edge);
+  EXPECT_NEAR(found[0].dn, dn, 1e-12);
+}
+
 TEST(EntranceEdge, VertexEntersThroughTopEdge) {
   // Block j: unit square; corner Q = (1,1). Block i: a diamond whose lowest
   // vertex P = (0.999, 0.9995) is 0.5 mm below the top face and 1 mm left of
@@ -174,13 +190,10 @@ TEST(EntranceEdge, VertexEntersThroughTopEdge) {
   const Polygon2 diamond{p, p + Vec2(0.5, 0.5), p + Vec2(0, 1), p + Vec2(-0.5, 0.5)};
   const std::vector<Polygon2> blocks{rectangle(0, 0, 1, 1), diamond};
   const auto found = find_contacts(blocks, {{0, 1}}, 0.01);
-  ASSERT_EQ(found.size(), 1u);
-  EXPECT_TRUE(found[0].vertex_vertex);
-  EXPECT_EQ(found[0].vblock, 1);
-  EXPECT_EQ(found[0].vertex, 0);
-  EXPECT_EQ(found[0].eblock, 0);
-  EXPECT_EQ(found[0].edge, 2);
-  EXPECT_NEAR(found[0].dn, -0.0005, 1e-12);
+  expect_one_contact(found, 1, 0, 0, 2, -0.0005);
+  if (!found.empty()) {
+    EXPECT_TRUE(found[0].vertex_vertex);
+  }
 }
 
 TEST(EntranceEdge, VertexEntersThroughSideEdge) {
@@ -193,12 +206,7 @@ TEST(EntranceEdge, VertexEntersThroughSideEdge) {
   const Polygon2 wedge{p, p + Vec2(1, 0), p + Vec2(1, 1)};
   const std::vector<Polygon2> blocks{rectangle(0, 0, 1, 1), wedge};
   const auto found = find_contacts(blocks, {{0, 1}}, 0.01);
-  ASSERT_EQ(found.size(), 1u);
-  EXPECT_EQ(found[0].vblock, 1);
-  EXPECT_EQ(found[0].vertex, 0);
-  EXPECT_EQ(found[0].eblock, 0);
-  EXPECT_EQ(found[0].edge, 1);
-  EXPECT_NEAR(found[0].dn, -0.0005, 1e-12);
+  expect_one_contact(found, 1, 0, 0, 1, -0.0005);
 }
 
 TEST(EntranceEdge, FarBlocksHaveNoContact) {
@@ -238,12 +246,7 @@ TEST(EntranceEdge, VertexNearBothEndsOfAShortEdgeMakesOneContact) {
       {{0, 0}, {1, 0}, {1, 0.995}, {0.995, 1}, {0, 1}},
       {p, p + Vec2(0.5, 0.1), p + Vec2(0.6, 0.6), p + Vec2(0.1, 0.5)}};
   const auto found = find_contacts(blocks, {{0, 1}}, 0.01);
-  ASSERT_EQ(found.size(), 1u);
-  EXPECT_EQ(found[0].vblock, 1);
-  EXPECT_EQ(found[0].vertex, 0);
-  EXPECT_EQ(found[0].eblock, 0);
-  EXPECT_EQ(found[0].edge, 2);
-  EXPECT_NEAR(found[0].dn, 0.003 / std::sqrt(2.0), 1e-12);
+  expect_one_contact(found, 1, 0, 0, 2, 0.003 / std::sqrt(2.0));
 }
 
 TEST(BroadPhase, SameAsBruteForce) {
