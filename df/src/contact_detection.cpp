@@ -206,7 +206,7 @@ std::vector<ContactCandidate> find_contacts(const std::vector<Polygon2>& blocks,
   // A key comes twice when a vertex lies near both ends of a short edge (an
   // edge shorter than the search distance): the vertex-vertex pairs with its
   // two ends can both resolve to that edge. One contact, not two: two would
-  // put the same springs in twice (about 10 contacts a step on a 10k-block
+  // put the same springs in twice (a few contacts a step on a 10k-block
   // layered model).
   out.erase(std::unique(out.begin(), out.end(),
                         [](const ContactCandidate& x, const ContactCandidate& y) {

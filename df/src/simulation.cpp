@@ -192,7 +192,7 @@ void Simulation::assemble(double dt, const std::vector<Contact>& contacts, std::
 }
 
 void Simulation::reassemble(double dt, const std::vector<Contact>& contacts,
-                            const std::vector<std::pair<int, Contact>>& before, const std::vector<int>& changed,
+                            const std::vector<std::pair<int, Contact>>& before, const std::vector<int>& in_before,
                             std::vector<double>& friction) {
   // F is updated, not formed again: between iterates only the contacts that
   // changed state and the friction of the sliding ones differ (a quarter of
@@ -202,11 +202,11 @@ void Simulation::reassemble(double dt, const std::vector<Contact>& contacts,
   // assembly, so F does not depend on the thread count.
   system_.scatter([&](int k) {
     const Contact& c = contacts[k];
-    if (changed[k] < 0 && c.state != ContactState::Sliding) return;
+    if (in_before[k] < 0 && c.state != ContactState::Sliding) return;
     const ContactLaw law = law_of(c);
     const double f = friction_force(c, law, dt);
-    if (changed[k] >= 0) {
-      add_contact_forces(before[changed[k]].second, law, friction[k], -1.0, system_);
+    if (in_before[k] >= 0) {
+      add_contact_forces(before[in_before[k]].second, law, friction[k], -1.0, system_);
       add_contact_forces(c, law, f, 1.0, system_);
     } else if (f != friction[k]) {
       add_friction_change(c, f - friction[k], system_);
@@ -230,11 +230,12 @@ bool Simulation::open_close(double dt, std::vector<Contact>& contacts, Eigen::Ve
   // states end.
   std::vector<std::uint8_t> changes(contacts.size(), 0);
   // The contacts whose state changed in the last update, as they were
-  // assembled: the next assembly swaps their springs only. A state change
-  // alters the springs through the state, ds0 and gs alone (update_contact).
+  // assembled: the next assembly swaps their springs and forces only. A
+  // state change alters them through the state, ds0 and gs alone
+  // (update_contact), and the friction, which `friction` keeps as assembled.
   std::vector<std::pair<int, Contact>> before;
   std::vector<int> in_before(contacts.size(), -1);  // position in `before`, -1 if not there
-  std::vector<double> friction;                   // as assembled (reassemble)
+  std::vector<double> friction;
   struct Springs {
     ContactState state;
     double ds0;

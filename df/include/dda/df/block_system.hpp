@@ -69,8 +69,6 @@ class BlockSystem {
   // declared pairs written by one thread at a time (see scatter).
   void add_coupling(int i, int j, const Matrix6d& kij);
   auto rhs(int i) { return rhs_.segment<kDofs>(kDofs * i); }
-  // Keeps K and the items; the right-hand side becomes `rhs`.
-  void reset_rhs(const Eigen::VectorXd& rhs) { rhs_ = rhs; }
   const Eigen::VectorXd& rhs() const { return rhs_; }
 
   // Calls f(k) for every item of the last reset(blocks, items), in parallel

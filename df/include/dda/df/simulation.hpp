@@ -139,10 +139,11 @@ class Simulation {
   void assemble(double dt, const std::vector<Contact>& contacts, std::vector<double>& friction);
   // The system of the next open-close iterate from the last one: `before`
   // holds the contacts whose state changed since, as they were assembled
-  // (index, contact), and changed[k] is their position in it (-1 for the
-  // others); `friction` is as assemble() leaves it, and is kept up to date.
+  // (index, contact), and in_before[k] is contact k's position in it (-1
+  // for the others); `friction` is as assemble() leaves it, and is kept up
+  // to date.
   void reassemble(double dt, const std::vector<Contact>& contacts, const std::vector<std::pair<int, Contact>>& before,
-                  const std::vector<int>& changed, std::vector<double>& friction);
+                  const std::vector<int>& in_before, std::vector<double>& friction);
   bool open_close(double dt, std::vector<Contact>& contacts, Eigen::VectorXd& d, int& iterations);
   void accept(double dt, const Eigen::VectorXd& d, std::vector<Contact>& contacts, StepRecord& rec);
   void record_measurements();
