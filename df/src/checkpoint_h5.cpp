@@ -54,11 +54,12 @@ void write_checkpoint(h5::Writer& w, const SimulationState& s) {
 
   const std::size_t nb = s.blocks.size();
   std::vector<Vec2> verts;
-  std::vector<double> vel, vel_end, stress;
+  std::vector<double> vel, vel_end, acc, stress;
   for (const BlockState& b : s.blocks) {
     verts.insert(verts.end(), b.vertices.begin(), b.vertices.end());
     for (int k = 0; k < kDofs; ++k) vel.push_back(b.velocity[k]);
     for (int k = 0; k < kDofs; ++k) vel_end.push_back(b.velocity_end[k]);
+    for (int k = 0; k < kDofs; ++k) acc.push_back(b.acceleration[k]);
     for (int k = 0; k < 3; ++k) stress.push_back(b.stress[k]);
   }
   h5::Id bg(H5Gcreate2(g.get(), "blocks", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
@@ -66,6 +67,8 @@ void write_checkpoint(h5::Writer& w, const SimulationState& s) {
   w.f64(bg.get(), "velocity", vel, {nb, kDofs}, "m/s, rad/s, 1/s",
         "start velocity of the next step (dynamic * end velocity): u v r ex ey gxy rates at the centroid");
   w.f64(bg.get(), "velocity_end", vel_end, {nb, kDofs}, "m/s, rad/s, 1/s", "end velocity of the last step");
+  w.f64(bg.get(), "acceleration", acc, {nb, kDofs}, "m/s2, rad/s2, 1/s2",
+        "acceleration of the last step (the next step's first solve starts from the motion it predicts)");
   w.f64(bg.get(), "stress", stress, {nb, 3}, "Pa", "sx sy txy, tension positive");
 
   const std::vector<Contact>& cs = s.contacts;
@@ -164,6 +167,11 @@ void read_checkpoint(const h5::Reader& r, const std::vector<std::size_t>& vertex
   };
   const std::vector<double> vel = table("/checkpoint/blocks/velocity", nb, kDofs);
   const std::vector<double> vel_end = table("/checkpoint/blocks/velocity_end", nb, kDofs);
+  // Files written before it was saved lack it: it only sets where the
+  // iterative solver starts, so they resume to within its tolerance.
+  const bool has_acc = r.exists("/checkpoint/blocks/acceleration");
+  const std::vector<double> acc =
+      has_acc ? table("/checkpoint/blocks/acceleration", nb, kDofs) : std::vector<double>(nb * kDofs, 0.0);
   const std::vector<double> stress = table("/checkpoint/blocks/stress", nb, 3);
   s.blocks.assign(nb, BlockState{});
   std::size_t at = 0;
@@ -174,6 +182,7 @@ void read_checkpoint(const h5::Reader& r, const std::vector<std::size_t>& vertex
     b.geometry = block_geometry(b.vertices);
     for (int k = 0; k < kDofs; ++k) b.velocity[k] = vel[kDofs * i + k];
     for (int k = 0; k < kDofs; ++k) b.velocity_end[k] = vel_end[kDofs * i + k];
+    for (int k = 0; k < kDofs; ++k) b.acceleration[k] = acc[kDofs * i + k];
     for (int k = 0; k < 3; ++k) b.stress[k] = stress[3 * i + k];
   }
 

@@ -323,6 +323,13 @@ double Simulation::max_vertex_displacement(const Eigen::VectorXd& d) const {
   return worst;
 }
 
+Eigen::VectorXd Simulation::predicted_step(double dt) const {
+  Eigen::VectorXd d(kDofs * model_.block_count());
+  for (int i = 0; i < model_.block_count(); ++i)
+    d.segment<kDofs>(kDofs * i) = dt * blocks_[i].velocity + 0.5 * dt * dt * blocks_[i].acceleration;
+  return d;
+}
+
 const StepRecord& Simulation::advance(double max_dt) {
   const ScopedTimer step_timer(timings_.total);
   {
@@ -340,6 +347,12 @@ const StepRecord& Simulation::advance(double max_dt) {
     const bool shortened = max_dt < dt_;
     const double dt = std::min(dt_, max_dt);
     copy_contacts(contacts_, work_, model_.block_count() > parallel_grain());
+    // The first solve starts from the motion the last step predicts. Once a
+    // model has come to rest under its loads this saves a third of the PCG
+    // iterations of that solve (28 to 18 on the 10k layered model), against
+    // starting from the last step's solution; in a transient it does as
+    // well as that (docs/solver2d.md).
+    solver_->set_warm_start({predicted_step(dt), dt});
     int iterations = 0;
     const bool settled = open_close(dt, work_, d, iterations);
     const double moved = max_vertex_displacement(d);

@@ -36,7 +36,8 @@ struct BlockState {
   Vector6d velocity = Vector6d::Zero();      // start velocity of the next step (k * v1)
   Vector6d velocity_end = Vector6d::Zero();  // v1, end velocity of the last step (before k)
   // Acceleration of the last step, 2 (d - dt v0) / dt^2: constant within a
-  // DDA step. Output only (receivers); a restored run recomputes it.
+  // DDA step. For the receivers, and for the motion the next step's first
+  // solve starts from (Simulation::predicted_step).
   Vector6d acceleration = Vector6d::Zero();
   Vector3d stress = Vector3d::Zero();    // [sx, sy, txy], Pa, tension positive
 };
@@ -149,6 +150,9 @@ class Simulation {
   void record_measurements();
   ContactLaw law_of(const Contact& c) const;
   double max_vertex_displacement(const Eigen::VectorXd& d) const;
+  // Where an iterative solve of a step of length dt starts: every block
+  // keeps its velocity and acceleration, d = v dt + a dt^2 / 2.
+  Eigen::VectorXd predicted_step(double dt) const;
   // Physics extensions, defined in simulation_physics.cpp, settle.cpp and
   // runaway.cpp (owned with the physics files).
   void init_physics();
