@@ -224,7 +224,17 @@ void Simulation::reassemble(double dt, const std::vector<Contact>& contacts,
   }
 }
 
-bool Simulation::open_close(double dt, std::vector<Contact>& contacts, Eigen::VectorXd& d, int& iterations) {
+bool Simulation::quiet_step() const {
+  // A step that settles needs a full solve after the one that left the
+  // states alone, so two solves are the fewest after a trial first solve,
+  // one after a full one.
+  if (log_.empty()) return false;
+  const StepRecord& last = log_.back();
+  return last.converged && last.dt_cuts == 0 && last.open_close_iterations <= 2;
+}
+
+bool Simulation::open_close(double dt, std::vector<Contact>& contacts, Eigen::VectorXd& d, int& iterations,
+                            bool trial_first) {
   // State changes of each contact in this step: from the second on, the
   // contact is held (update_contact) so cycles between near-zero-force
   // states end.
@@ -246,7 +256,8 @@ bool Simulation::open_close(double dt, std::vector<Contact>& contacts, Eigen::Ve
   // Trial solves (linear_solver.hpp) while the states change; an iterate
   // that settles on a trial solve is solved again at full accuracy and
   // checked once more, and the last iterate allowed is always a full solve.
-  bool trial = true;
+  // After a quiet step the first solve is a full one (quiet_step).
+  bool trial = trial_first;
   const TrialScope trial_scope(*solver_);
   for (iterations = 1; iterations <= model_.control.max_open_close; ++iterations) {
     {
@@ -304,6 +315,8 @@ bool Simulation::open_close(double dt, std::vector<Contact>& contacts, Eigen::Ve
     if (!changed && !friction_lags) {
       if (!was_trial) return true;
       trial = false;
+    } else if (iterations == 1) {
+      trial = true;  // a full first solve (trial_first false) that did not settle: trials from here
     }
   }
   iterations = model_.control.max_open_close;
@@ -354,7 +367,7 @@ const StepRecord& Simulation::advance(double max_dt) {
     // well as that (docs/solver2d.md).
     solver_->set_warm_start({predicted_step(dt), dt});
     int iterations = 0;
-    const bool settled = open_close(dt, work_, d, iterations);
+    const bool settled = open_close(dt, work_, d, iterations, !quiet_step());
     const double moved = max_vertex_displacement(d);
     check_runaway(d, moved, dt, dt <= dt_min * (1 + 1e-9));
     const bool too_far = moved > max_step_displacement_;

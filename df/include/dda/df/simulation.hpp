@@ -145,7 +145,16 @@ class Simulation {
   // to date.
   void reassemble(double dt, const std::vector<Contact>& contacts, const std::vector<std::pair<int, Contact>>& before,
                   const std::vector<int>& in_before, std::vector<double>& friction);
-  bool open_close(double dt, std::vector<Contact>& contacts, Eigen::VectorXd& d, int& iterations);
+  // The open-close iteration of one attempt; true when the states settled.
+  // With trial_first false the first solve is a full one (see quiet_step).
+  bool open_close(double dt, std::vector<Contact>& contacts, Eigen::VectorXd& d, int& iterations,
+                  bool trial_first = true);
+  // Whether the last accepted step was quiet: its first solve changed no
+  // contact state (it settled in the fewest solves possible, without a cut).
+  // The next step then most likely settles on its first solve too, so that
+  // solve is made at full accuracy rather than as a trial that would have
+  // to be repeated. Read from the log, so a resumed run decides the same.
+  bool quiet_step() const;
   void accept(double dt, const Eigen::VectorXd& d, std::vector<Contact>& contacts, StepRecord& rec);
   void record_measurements();
   ContactLaw law_of(const Contact& c) const;
