@@ -158,7 +158,7 @@ std::vector<ContactCandidate> find_contacts(const std::vector<Polygon2>& blocks,
           const double l2 = e.squaredNorm();
           if (l2 == 0) continue;
           const double t = std::clamp((p - a).dot(e) / l2, 0.0, 1.0);
-          if ((a + t * e - p).norm() > d0) continue;
+          if ((a + t * e - p).squaredNorm() > d0 * d0) continue;  // no root for the many that are not near
           const double da = (p - a).norm(), db = (p - b).norm();
           if (std::min(da, db) < d0) {
             const int w = da <= db ? k : next_index(nj, k);

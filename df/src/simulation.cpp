@@ -104,54 +104,77 @@ void Simulation::detect_contacts() {
   // list is built in work_ (free between steps) and swapped in.
   std::vector<Contact>& next = work_;
   next.resize(candidates.size());
-#pragma omp parallel for schedule(static) if (nb > parallel_grain())
-  for (std::size_t k = 0; k < candidates.size(); ++k) {
-    const ContactCandidate& cand = candidates[k];
-    Contact c;
-    c.vblock = cand.vblock;
-    c.vertex = cand.vertex;
-    c.eblock = cand.eblock;
-    c.edge = cand.edge;
-    c.joint = joint_of(c.vblock, c.vertex, c.eblock, c.edge);
-    bool keep_reference = false;
-    const int ex = last.exact(c.vblock, c.vertex, c.eblock, c.edge);
-    const int bv = ex >= 0 ? ex : last.by_vertex(c.vblock, c.vertex, c.eblock);
-    if (bv >= 0) {
-      const Contact& old = contacts_[bv];
-      c.state = old.state;
-      c.slip_sign = old.slip_sign;
-      c.normal_force = old.normal_force;
-      c.shear_force = old.shear_force;
-      c.slip_velocity = old.slip_velocity;
-      c.bonded = old.bonded;
-      c.glued = old.glued;
-      c.friction = old.friction;
-      c.ref_ratio = old.ref_ratio;
-      keep_reference = ex >= 0 && old.state == ContactState::Locked;
-    } else if (step_count_ == 0) {
-      // Bonds exist only between faces in touch at the start.
-      const JointProperties& j = model_.joints[c.joint];
-      c.glued = on_artificial_cut(model_.blocks[c.vblock], c.vertex, model_.blocks[c.eblock], c.edge) &&
-                std::abs(cand.dn) <= 1e-3 * d0;
-      c.bonded = c.glued || ((j.cohesion > 0 || j.tensile_strength > 0) && std::abs(cand.dn) <= 1e-3 * d0);
-      // Faces in touch at the start are in contact: they start closed and
-      // open in the iteration if they pull apart. Starting them open made a
-      // stack of beds close one contact layer per open-close iteration (the
-      // blocks above fall together, so only the lowest joint penetrates), so
-      // a 40-bed model never settled within the iteration limit.
-      if (c.bonded || cand.dn <= model_.contact_tolerance) c.state = ContactState::Locked;
+  const long last_count = static_cast<long>(contacts_.size());
+#pragma omp parallel if (nb > parallel_grain())
+  {
+    // Both lists are sorted by key and mostly hold the same contacts, so a
+    // contact of the last step is first looked for where the last one found
+    // on this thread suggests, and searched for only when it is not there
+    // (a contact came or went in between). What is found does not depend on
+    // where the threads' ranges start: it is what last.exact() returns (the
+    // last contact with the key; detection makes keys unique anyway).
+    auto same_key = [&](long at, const Contact& c) {
+      const Contact& o = contacts_[static_cast<std::size_t>(at)];
+      return o.vblock == c.vblock && o.vertex == c.vertex && o.eblock == c.eblock && o.edge == c.edge;
+    };
+    long shift = 0;  // position in contacts_ minus position in candidates
+#pragma omp for schedule(static)
+    for (std::size_t k = 0; k < candidates.size(); ++k) {
+      const ContactCandidate& cand = candidates[k];
+      Contact c;
+      c.vblock = cand.vblock;
+      c.vertex = cand.vertex;
+      c.eblock = cand.eblock;
+      c.edge = cand.edge;
+      bool keep_reference = false;
+      const long guess = static_cast<long>(k) + shift;
+      int ex = -1;
+      if (guess >= 0 && guess < last_count && same_key(guess, c) && (guess + 1 == last_count || !same_key(guess + 1, c))) {
+        ex = static_cast<int>(guess);
+      } else {
+        ex = last.exact(c.vblock, c.vertex, c.eblock, c.edge);
+        if (ex >= 0) shift = ex - static_cast<long>(k);
+      }
+      // The joint set of a vertex against an edge is that of the last step.
+      c.joint = ex >= 0 ? contacts_[ex].joint : joint_of(c.vblock, c.vertex, c.eblock, c.edge);
+      const int bv = ex >= 0 ? ex : last.by_vertex(c.vblock, c.vertex, c.eblock);
+      if (bv >= 0) {
+        const Contact& old = contacts_[bv];
+        c.state = old.state;
+        c.slip_sign = old.slip_sign;
+        c.normal_force = old.normal_force;
+        c.shear_force = old.shear_force;
+        c.slip_velocity = old.slip_velocity;
+        c.bonded = old.bonded;
+        c.glued = old.glued;
+        c.friction = old.friction;
+        c.ref_ratio = old.ref_ratio;
+        keep_reference = ex >= 0 && old.state == ContactState::Locked;
+      } else if (step_count_ == 0) {
+        // Bonds exist only between faces in touch at the start.
+        const JointProperties& j = model_.joints[c.joint];
+        c.glued = on_artificial_cut(model_.blocks[c.vblock], c.vertex, model_.blocks[c.eblock], c.edge) &&
+                  std::abs(cand.dn) <= 1e-3 * d0;
+        c.bonded = c.glued || ((j.cohesion > 0 || j.tensile_strength > 0) && std::abs(cand.dn) <= 1e-3 * d0);
+        // Faces in touch at the start are in contact: they start closed and
+        // open in the iteration if they pull apart. Starting them open made a
+        // stack of beds close one contact layer per open-close iteration (the
+        // blocks above fall together, so only the lowest joint penetrates), so
+        // a 40-bed model never settled within the iteration limit.
+        if (c.bonded || cand.dn <= model_.contact_tolerance) c.state = ContactState::Locked;
+      }
+      const BlockState& bi = blocks_[c.vblock];
+      const BlockState& bj = blocks_[c.eblock];
+      c.geo = contact_geometry(bi.vertices, bi.geometry.centroid, bj.vertices, bj.geometry.centroid, c.vertex, c.edge,
+                               c.ref_ratio);
+      if (!keep_reference) {  // shear is measured from where P is now
+        c.ref_ratio = c.geo.ratio0;
+        c.geo.ds0 = 0;
+        c.geo.gs = c.geo.gc;
+      }
+      c.length = tributary_length(bi.vertices, c.vertex, c.geo.tangent);
+      next[k] = std::move(c);
     }
-    const BlockState& bi = blocks_[c.vblock];
-    const BlockState& bj = blocks_[c.eblock];
-    c.geo = contact_geometry(bi.vertices, bi.geometry.centroid, bj.vertices, bj.geometry.centroid, c.vertex, c.edge,
-                             c.ref_ratio);
-    if (!keep_reference) {  // shear is measured from where P is now
-      c.ref_ratio = c.geo.ratio0;
-      c.geo.ds0 = 0;
-      c.geo.gs = c.geo.gc;
-    }
-    c.length = tributary_length(bi.vertices, c.vertex, c.geo.tangent);
-    next[k] = std::move(c);
   }
   contacts_.swap(next);
 }
