@@ -27,6 +27,10 @@
 // Add --benchmark_min_time=N (seconds) or run a fixed number of steps with
 // --steps N; --skip N takes N steps before the timing starts (default 3),
 // e.g. to time a model once its start-up transient has died out.
+// --resume RESULTS.h5 (with --scenario) starts from the state saved in a
+// results file of that model (`dda df` keeps it at the end of a run, or
+// at --stop-at-step): the steps of a model that has come to rest, say,
+// timed without running up to them each time.
 #include <benchmark/benchmark.h>
 #include <omp.h>
 
@@ -46,6 +50,7 @@
 #include "dda/common/yaml_reader.hpp"
 #include "dda/df/import_ana.hpp"
 #include "dda/df/linear_solver.hpp"
+#include "dda/df/results.hpp"
 #include "dda/df/model.hpp"
 #include "dda/df/scenario.hpp"
 #include "dda/df/simulation.hpp"
@@ -203,9 +208,12 @@ ModelInput scenario_input(const std::string& scenario, const std::string& blocks
 
 // Times `steps` steps (or as many as Google Benchmark's time allows) of the
 // model and prints where its measurement points end up.
-void register_model(const std::string& label, const Model& model, int steps) {
-  auto* b = benchmark::RegisterBenchmark(("BM_Model/" + label).c_str(), [model](benchmark::State& state) {
+// Starts from `start` if given (a checkpoint of the same model).
+void register_model(const std::string& label, const Model& model, int steps,
+                    std::shared_ptr<const SimulationState> start = nullptr) {
+  auto* b = benchmark::RegisterBenchmark(("BM_Model/" + label).c_str(), [model, start](benchmark::State& state) {
     Simulation sim(model);
+    if (start) sim.restore(*start);
     state.SetLabel(sim.solver().name());
     time_steps(state, sim);
     std::fprintf(stderr, "model: %zu steps to t = %.6g s\n", sim.log().size(), sim.time());
@@ -225,7 +233,7 @@ void register_model(const std::string& label, const Model& model, int steps) {
 int main(int argc, char** argv) {
   dda::keep_freed_memory();  // memory_policy.hpp: large buffers are re-allocated every iterate
   // Our own flags first; the rest goes to Google Benchmark.
-  std::string blocks_file, scenario;
+  std::string blocks_file, scenario, resume;
   double dt = 1e-3;
   int steps = 0;
   std::vector<char*> rest;
@@ -239,11 +247,17 @@ int main(int argc, char** argv) {
       scenario = argv[++i];
     } else if (std::strcmp(argv[i], "--steps") == 0 && has_value) {
       steps = std::atoi(argv[++i]);
+    } else if (std::strcmp(argv[i], "--resume") == 0 && has_value) {
+      resume = argv[++i];
     } else if (std::strcmp(argv[i], "--skip") == 0 && has_value) {
       g_skip_steps = std::max(0, std::atoi(argv[++i]));
     } else {
       rest.push_back(argv[i]);
     }
+  }
+  if (!resume.empty() && scenario.empty()) {
+    std::fprintf(stderr, "bench_df: --resume needs --scenario and --blocks (the model the results file is of).\n");
+    return 1;
   }
   if (!scenario.empty() && blocks_file.empty()) {
     std::fprintf(stderr, "bench_df: --scenario needs --blocks (the blocks file `dda dc` wrote for it).\n");
@@ -252,7 +266,14 @@ int main(int argc, char** argv) {
   if (!blocks_file.empty()) {
     try {
       if (!scenario.empty()) {
-        register_model(scenario, build_model(scenario_input(scenario, blocks_file)), steps);
+        std::shared_ptr<const SimulationState> start;
+        if (!resume.empty()) {
+          Results saved = read_results_h5(resume);
+          if (!saved.checkpoint)
+            throw dda::InputError(resume + ": holds no saved state to start from (not a results file of `dda df`?).");
+          start = std::make_shared<const SimulationState>(std::move(*saved.checkpoint));
+        }
+        register_model(scenario, build_model(scenario_input(scenario, blocks_file)), steps, start);
       } else {
         ModelInput in;
         in.geometry = dda::read_blocks_h5(blocks_file);

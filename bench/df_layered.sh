@@ -13,6 +13,15 @@
 # growth exponent of the cost per step between sizes.
 #
 #   bash bench/df_layered.sh [STEPS]          # default 30
+#   bash bench/df_layered.sh STEPS REST       # also STEPS steps after REST s of model time
+#
+# With REST (model seconds, e.g. 1), each model is also run with `dda df`
+# from rest to t = REST, printing the wall time that took (seconds per
+# model second: what a user waits for), and then STEPS steps are timed
+# from there (bench_df --resume): by then the transient has died out and
+# the model rests on its contacts, which is most of a long run's steps.
+# Running to 1 s takes about 20 s, 2.5 min and 25 min at the three sizes;
+# REST_SIZES="41x27 130x85" leaves the largest out.
 #   BUILD=/path/to/build bash bench/df_layered.sh   # another build directory (default build)
 #
 # The same bench_df times any model `dda df` runs, e.g. a DDA-for-Windows
@@ -21,6 +30,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 steps="${1:-30}"
+rest="${2:-}"
 build="${BUILD:-build}"
 [ -x "$build/bench/bench_df" ] && [ -x "$build/bin/dda" ] || bash scripts/build.sh
 work="${TMPDIR:-/tmp}/dda_bench_layered"
@@ -56,4 +66,28 @@ PY
     /usr/bin/python3 -c "import math; print('        cost per step grows as N^%.2f from %s to %s blocks' % (math.log($ms / $prev_ms) / math.log($n / $prev_n), $prev_n, $n))"
   fi
   prev_n=$n prev_ms=$ms
+done
+
+[ -n "$rest" ] || exit 0
+echo
+echo "after ${rest} s of model time (the transient over):"
+printf '%-7s %8s %12s %7s %12s %11s %13s %10s %7s\n' size blocks wall_s_to_rest solves ms_per_step search_pct assembly_pct solve_pct dt_us
+for name in ${REST_SIZES:-41x27 130x85 290x190}; do
+  sed -e "s/^  total_time: .*/  total_time: $rest/" "$work/$name.yaml" > "$work/$name.rest.yaml"
+  start=$(date +%s.%N)
+  "$build/bin/dda" df "$work/$name.rest.yaml" --blocks "$work/$name.blocks.h5" -o "$work/$name.rest.h5" \
+      > "$work/$name.rest.log" 2>&1
+  wall=$(/usr/bin/python3 -c "import time; print(round(time.time() - $start, 1))")
+  "$build/bench/bench_df" --blocks "$work/$name.blocks.h5" --scenario "$work/$name.yaml" --resume "$work/$name.rest.h5" \
+      --skip 0 --steps "$steps" --benchmark_filter=BM_Model --benchmark_format=json > "$work/$name.rest.json" 2>> "$work/$name.rest.log"
+  line=$(/usr/bin/python3 - "$work/$name.rest.json" <<'PY'
+import json, sys
+text = open(sys.argv[1]).read()
+b = json.loads(text[text.index("{"):])["benchmarks"][0]
+print(int(b["blocks"]), round(b["solves_per_step"], 1), round(b["ms_per_step"], 1),
+      round(b["search_pct"], 1), round(b["assembly_pct"], 1), round(b["solve_pct"], 1), round(b["dt_us"], 1))
+PY
+)
+  read -r n s ms sp as so dtu <<<"$line"
+  printf '%-7s %8s %12s %7s %12s %11s %13s %10s %7s\n' "$name" "$n" "$wall" "$s" "$ms" "$sp" "$as" "$so" "$dtu"
 done
