@@ -50,8 +50,8 @@
 #include "dda/common/yaml_reader.hpp"
 #include "dda/df/import_ana.hpp"
 #include "dda/df/linear_solver.hpp"
-#include "dda/df/results.hpp"
 #include "dda/df/model.hpp"
+#include "dda/df/results.hpp"
 #include "dda/df/scenario.hpp"
 #include "dda/df/simulation.hpp"
 

@@ -20,7 +20,7 @@
 # model second: what a user waits for), and then STEPS steps are timed
 # from there (bench_df --resume): by then the transient has died out and
 # the model rests on its contacts, which is most of a long run's steps.
-# Running to 1 s takes about 20 s, 2.5 min and 25 min at the three sizes;
+# Running to 1 s takes about 20 s, 2.5 min and 30 min at the three sizes;
 # REST_SIZES="41x27 130x85" leaves the largest out.
 #   BUILD=/path/to/build bash bench/df_layered.sh   # another build directory (default build)
 #
