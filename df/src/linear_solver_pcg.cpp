@@ -135,7 +135,9 @@ class HybridSolver final : public LinearSolver {
   }
 
   // PCG from the warm start: the last solution, times dt / dt_last across
-  // steps (d ~ v dt); `direct` solves when PCG does not converge.
+  // steps (d ~ v dt), or what set_warm_start() gave (the 2D simulation sets
+  // the predicted motion at every step); `direct` solves when PCG does not
+  // converge.
   template <class Pcg, class Op, class Direct>
   Eigen::VectorXd iterate(Pcg& pcg, const Op& op, const Eigen::VectorXd& b, double dt, Direct&& direct) {
     const Eigen::Index n = b.size();

@@ -122,7 +122,8 @@ TEST(SolverPcg, AutoChoosesBySizeAndTheUserCanForceEither) {
 }
 
 TEST(SolverPcg, WarmStartCutsIterations) {
-  // The second and later steps start from the scaled last solution.
+  // The second and later steps start from a warm start (the motion the last
+  // step predicts; FirstSolveStartsFromThePredictedMotion below).
   Simulation sim(build_model(brick_wall(4, 6, "pcg")));
   sim.step();
   const SolverStats first = sim.solver().stats();
