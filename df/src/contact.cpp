@@ -33,9 +33,8 @@ ContactGeometry contact_geometry(const Polygon2& vi, const Vec2& ci, const Polyg
   const Vec2 grad_p(e.y(), -e.x());
   const Vec2 grad_a(p.y() - b.y(), b.x() - p.x());
   const Vec2 grad_b(a.y() - p.y(), p.x() - a.x());
-  const Matrix26d ti = t_matrix(ci, p);
-  g.en = ti.transpose() * grad_p / g.length;
-  g.gn = (t_matrix(cj, a).transpose() * grad_a + t_matrix(cj, b).transpose() * grad_b) / g.length;
+  g.en = t_transpose_times(ci, p, grad_p) / g.length;
+  g.gn = (t_transpose_times(cj, a, grad_a) + t_transpose_times(cj, b, grad_b)) / g.length;
 
   // Shear: offset of P along the (fixed) tangent from the reference point
   // P0, which moves with block j. The edge's own rotation changes ds only to
@@ -43,9 +42,9 @@ ContactGeometry contact_geometry(const Polygon2& vi, const Vec2& ci, const Polyg
   g.ratio0 = (p - a).dot(e) / (g.length * g.length);
   const Vec2 p0 = a + ref_ratio * e;
   g.ds0 = (p - p0).dot(g.tangent);
-  g.es = ti.transpose() * g.tangent;
-  g.gs = -t_matrix(cj, p0).transpose() * g.tangent;
-  g.gc = -t_matrix(cj, a + g.ratio0 * e).transpose() * g.tangent;
+  g.es = t_transpose_times(ci, p, g.tangent);
+  g.gs = -t_transpose_times(cj, p0, g.tangent);
+  g.gc = -t_transpose_times(cj, a + g.ratio0 * e, g.tangent);
   return g;
 }
 
