@@ -145,6 +145,7 @@ void time_steps(benchmark::State& state, Simulation& sim) {
   state.counters["search_pct"] = 100 * (t1.contact_search - t0.contact_search) / total;
   state.counters["assembly_pct"] = 100 * (t1.assembly - t0.assembly) / total;
   state.counters["solve_pct"] = 100 * (t1.solve - t0.solve) / total;
+  state.counters["near_searches"] = static_cast<double>(t1.near_searches - t0.near_searches);
   state.counters["solves_per_step"] = static_cast<double>(t1.solves - t0.solves) / n;
   const long pcg = s1.pcg_solves - s0.pcg_solves;
   state.counters["pcg_it"] = pcg > 0 ? static_cast<double>(s1.pcg_iterations - s0.pcg_iterations) / pcg : 0;

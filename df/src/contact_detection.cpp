@@ -1,6 +1,7 @@
 // Narrow phase: vertex-edge contacts and the entrance-edge rule.
 #include "dda/df/contact_detection.hpp"
 #include "dda/df/block_system.hpp"
+#include "dda/common/error.hpp"
 
 #include <omp.h>
 
@@ -16,9 +17,9 @@ namespace {
 int prev_index(int n, int v) { return (v + n - 1) % n; }
 int next_index(int n, int v) { return (v + 1) % n; }
 
-// Outward unit normal of edge k (CCW polygon).
+// Outward normal of edge k (CCW polygon), as long as the edge.
 Vec2 outward_normal(const Polygon2& poly, int k) {
-  const Vec2 t = (poly[next_index(static_cast<int>(poly.size()), k)] - poly[k]).normalized();
+  const Vec2 t = poly[next_index(static_cast<int>(poly.size()), k)] - poly[k];
   return {t.y(), -t.x()};
 }
 
@@ -26,13 +27,17 @@ Vec2 outward_normal(const Polygon2& poly, int k) {
 // n when both of its edges leave it on the outside of the edge's line (n
 // points from the edge's block toward the vertex's block). A tolerance of a
 // few degrees keeps the two contacts of a block resting flat but slightly
-// rotated.
+// rotated. Compared squared, without normalising (three square roots and
+// divisions per candidate, a tenth of the search).
 bool admissible(const Polygon2& poly, int v, const Vec2& n) {
   constexpr double kSinTol = 0.0871557;  // sin(5 degrees)
   const int m = static_cast<int>(poly.size());
-  const Vec2 a = (poly[prev_index(m, v)] - poly[v]).normalized();
-  const Vec2 b = (poly[next_index(m, v)] - poly[v]).normalized();
-  return a.dot(n) >= -kSinTol && b.dot(n) >= -kSinTol;
+  const double nn = n.squaredNorm();
+  auto outside = [&](const Vec2& side) {  // cos(side, n) >= -sin(5 degrees)
+    const double dot = side.dot(n);
+    return dot >= 0 || dot * dot <= kSinTol * kSinTol * side.squaredNorm() * nn;
+  };
+  return outside(poly[prev_index(m, v)] - poly[v]) && outside(poly[next_index(m, v)] - poly[v]);
 }
 
 ContactCandidate make(const std::vector<Polygon2>& blocks, int i, int v, int j, int k, bool vv) {
@@ -120,27 +125,25 @@ double signed_distance(const Vec2& p, const Vec2& a, const Vec2& b) {
   return cross(p - a, e) / e.norm();
 }
 
-std::vector<ContactCandidate> find_contacts(const std::vector<Polygon2>& blocks,
-                                            const std::vector<std::pair<int, int>>& pairs, double search_distance,
-                                            const std::function<bool(int, int, int)>& previous) {
-  // Pairs are independent (a vertex-vertex contact involves the two blocks
-  // of one pair only), so they are scanned in parallel into per-thread
-  // lists, which are then sorted into one (see the end). `previous` is only
-  // read.
-  const double d0 = search_distance;
+NearPairs near_pairs(const std::vector<Polygon2>& blocks, const std::vector<std::pair<int, int>>& pairs,
+                     double reach) {
   const int npairs = static_cast<int>(pairs.size());
   const int nblocks = static_cast<int>(blocks.size());
   std::vector<Box2> boxes(blocks.size());
 #pragma omp parallel for schedule(static) if (nblocks > parallel_grain())
   for (int b = 0; b < nblocks; ++b) boxes[b] = bounding_box(blocks[b]);
-  std::vector<std::vector<ContactCandidate>> found;
+  // Per thread: its pairs (index into `pairs`, entry count) and entries, in
+  // order; joined in thread order, which is pair order (static schedule).
+  struct Part {
+    std::vector<std::pair<int, int>> pairs;
+    std::vector<NearPairs::Entry> entries;
+  };
+  std::vector<Part> parts;
 #pragma omp parallel if (npairs > 2 * parallel_grain())
   {
 #pragma omp single
-    found.resize(static_cast<std::size_t>(omp_get_num_threads()));
-    std::vector<ContactCandidate>& out = found[static_cast<std::size_t>(omp_get_thread_num())];
-    std::vector<std::array<int, 4>> vertex_pairs;  // (lower block, its vertex, other block, its vertex)
-
+    parts.resize(static_cast<std::size_t>(omp_get_num_threads()));
+    Part mine;  // moved into parts at the end (see find_contacts: no shared cache line)
     auto scan = [&](int i, int j) {  // vertices of i against edges of j
       const Polygon2& pi = blocks[i];
       const Polygon2& pj = blocks[j];
@@ -148,54 +151,149 @@ std::vector<ContactCandidate> find_contacts(const std::vector<Polygon2>& blocks,
       const Box2& bj = boxes[j];
       for (int v = 0; v < ni; ++v) {
         const Vec2& p = pi[v];
-        // Farther than d0 from the box of j: from every edge of j too.
-        if (p.x() < bj.lo.x() - d0 || p.x() > bj.hi.x() + d0 || p.y() < bj.lo.y() - d0 || p.y() > bj.hi.y() + d0)
+        // Farther than reach from the box of j: from every edge of j too.
+        if (p.x() < bj.lo.x() - reach || p.x() > bj.hi.x() + reach || p.y() < bj.lo.y() - reach ||
+            p.y() > bj.hi.y() + reach)
           continue;
         for (int k = 0; k < nj; ++k) {
           const Vec2& a = pj[k];
-          const Vec2& b = pj[next_index(nj, k)];
-          const Vec2 e = b - a;
+          const Vec2 e = pj[next_index(nj, k)] - a;
           const double l2 = e.squaredNorm();
           if (l2 == 0) continue;
           const double t = std::clamp((p - a).dot(e) / l2, 0.0, 1.0);
-          if ((a + t * e - p).squaredNorm() > d0 * d0) continue;  // no root for the many that are not near
-          const double da = (p - a).norm(), db = (p - b).norm();
-          if (std::min(da, db) < d0) {
-            const int w = da <= db ? k : next_index(nj, k);
-            vertex_pairs.push_back(i < j ? std::array<int, 4>{i, v, j, w} : std::array<int, 4>{j, w, i, v});
-            continue;
-          }
-          if (!admissible(pi, v, outward_normal(pj, k))) continue;
-          const ContactCandidate c = make(blocks, i, v, j, k, false);
-          if (plausible(blocks, c, 1e-6 * d0)) out.push_back(c);
+          if ((a + t * e - p).squaredNorm() <= reach * reach) mine.entries.push_back({i, v, j, k});
         }
       }
     };
-#pragma omp for schedule(static)
+#pragma omp for schedule(static) nowait
     for (int q = 0; q < npairs; ++q) {
-      const auto [a, b] = pairs[q];
+      const std::size_t before = mine.entries.size();
+      scan(pairs[q].first, pairs[q].second);
+      scan(pairs[q].second, pairs[q].first);
+      const int count = static_cast<int>(mine.entries.size() - before);
+      if (count > 0) mine.pairs.emplace_back(q, count);
+    }
+    parts[static_cast<std::size_t>(omp_get_thread_num())] = std::move(mine);
+  }
+  NearPairs near;
+  near.reach = reach;
+  std::size_t npairs_near = 0, nentries = 0;
+  for (const Part& part : parts) {
+    npairs_near += part.pairs.size();
+    nentries += part.entries.size();
+  }
+  near.pairs.reserve(npairs_near);
+  near.start.reserve(npairs_near + 1);
+  near.entries.reserve(nentries);
+  for (const Part& part : parts) {
+    for (const auto& [q, count] : part.pairs) {
+      near.pairs.push_back(pairs[static_cast<std::size_t>(q)]);
+      near.start.push_back(near.start.back() + count);
+    }
+    near.entries.insert(near.entries.end(), part.entries.begin(), part.entries.end());
+  }
+  return near;
+}
+
+std::vector<ContactCandidate> find_contacts(const std::vector<Polygon2>& blocks,
+                                            const std::vector<std::pair<int, int>>& pairs, double search_distance,
+                                            const std::function<bool(int, int, int)>& previous) {
+  return find_contacts(blocks, near_pairs(blocks, pairs, search_distance), search_distance, previous);
+}
+
+std::vector<ContactCandidate> find_contacts(const std::vector<Polygon2>& blocks, const NearPairs& near,
+                                            double search_distance,
+                                            const std::function<bool(int, int, int)>& previous) {
+  // Pairs are independent (a vertex-vertex contact involves the two blocks
+  // of one pair only), so they are scanned in parallel into per-thread
+  // lists, which are then sorted into one (see the end). `previous` is only
+  // read. The near pairs hold every vertex-edge pair within reach, so the
+  // contacts do not depend on how far reach exceeds the search distance.
+  const double d0 = search_distance;
+  if (d0 > near.reach) throw InternalError("find_contacts: the search distance exceeds the near pairs' reach");
+  const int npairs = static_cast<int>(near.pairs.size());
+  const int nblocks = static_cast<int>(blocks.size());
+  std::vector<std::vector<ContactCandidate>> found;
+#pragma omp parallel if (npairs > 2 * parallel_grain())
+  {
+#pragma omp single
+    found.resize(static_cast<std::size_t>(omp_get_num_threads()));
+    // A list of this thread's own, moved into `found` at the end: pushing
+    // onto found[t] directly had the threads write one cache line (the
+    // vectors' ends lie side by side) all the time.
+    std::vector<ContactCandidate> out;
+    std::vector<std::array<int, 4>> vertex_pairs;  // (lower block, its vertex, other block, its vertex)
+#pragma omp for schedule(static) nowait
+    for (int q = 0; q < npairs; ++q) {
       vertex_pairs.clear();
-      scan(a, b);
-      scan(b, a);
+      for (int n = near.start[q]; n < near.start[q + 1]; ++n) {
+        const auto [i, v, j, k] = near.entries[static_cast<std::size_t>(n)];
+        const Polygon2& pi = blocks[i];
+        const Polygon2& pj = blocks[j];
+        const int nj = static_cast<int>(pj.size());
+        const Vec2& p = pi[v];
+        const Vec2& a = pj[k];
+        const Vec2& b = pj[next_index(nj, k)];
+        const Vec2 e = b - a;
+        const double l2 = e.squaredNorm();
+        if (l2 == 0) continue;
+        const double t = std::clamp((p - a).dot(e) / l2, 0.0, 1.0);
+        if ((a + t * e - p).squaredNorm() > d0 * d0) continue;  // no root for the many that are not near
+        const double da2 = (p - a).squaredNorm(), db2 = (p - b).squaredNorm();
+        if (std::min(da2, db2) < d0 * d0) {  // near an end: a vertex-vertex contact
+          const int w = da2 <= db2 ? k : next_index(nj, k);
+          vertex_pairs.push_back(i < j ? std::array<int, 4>{i, v, j, w} : std::array<int, 4>{j, w, i, v});
+          continue;
+        }
+        if (!admissible(pi, v, outward_normal(pj, k))) continue;
+        const ContactCandidate c = make(blocks, i, v, j, k, false);
+        if (plausible(blocks, c, 1e-6 * d0)) out.push_back(c);
+      }
       std::sort(vertex_pairs.begin(), vertex_pairs.end());
       vertex_pairs.erase(std::unique(vertex_pairs.begin(), vertex_pairs.end()), vertex_pairs.end());
       for (const auto& vp : vertex_pairs) resolve_vertex_vertex(blocks, vp[0], vp[1], vp[2], vp[3], d0, previous, out);
     }
+    found[static_cast<std::size_t>(omp_get_thread_num())] = std::move(out);
   }
   // Sorted by (vblock, vertex, eblock, edge): bucketed by vertex block, then
   // each block's few candidates sorted, in parallel (one serial sort of all
   // of them cost a millisecond a step on 10k blocks). Candidates with the
   // same key are equal in every field (a key comes from one pair of blocks),
-  // so the result is the one a full sort gives.
+  // so the result is the one a full sort gives. Each thread counts and
+  // places its own list; a bucket holds thread 0's candidates first, in
+  // their order, then thread 1's, as a serial pass would place them.
+  const int nthreads = static_cast<int>(found.size());
+  std::vector<int> count(static_cast<std::size_t>(nthreads) * nblocks, 0);  // [thread][block]
   std::vector<int> start(static_cast<std::size_t>(nblocks) + 1, 0);
-  for (const auto& f : found)
-    for (const ContactCandidate& c : f) ++start[c.vblock + 1];
-  for (int b = 0; b < nblocks; ++b) start[b + 1] += start[b];
-  std::vector<ContactCandidate> out(static_cast<std::size_t>(start[nblocks]));
+  std::vector<ContactCandidate> out;
+#pragma omp parallel num_threads(nthreads) if (nthreads > 1 && nblocks > parallel_grain())
   {
-    std::vector<int> fill(start.begin(), start.end() - 1);
-    for (const auto& f : found)
-      for (const ContactCandidate& c : f) out[fill[c.vblock]++] = c;
+    // Lists by thread of the search; by the thread of this team too (one
+    // each unless the team came out smaller).
+    const int me = omp_get_thread_num(), team = omp_get_num_threads();
+    for (int t = me; t < nthreads; t += team) {
+      int* at = count.data() + static_cast<std::size_t>(t) * nblocks;
+      for (const ContactCandidate& c : found[static_cast<std::size_t>(t)]) ++at[c.vblock];
+    }
+#pragma omp barrier
+#pragma omp single
+    {
+      for (int b = 0; b < nblocks; ++b) {  // count becomes where each thread's candidates of b go
+        int at = start[b];
+        for (int u = 0; u < nthreads; ++u) {
+          int& n = count[static_cast<std::size_t>(u) * nblocks + b];
+          const int here = n;
+          n = at;
+          at += here;
+        }
+        start[b + 1] = at;
+      }
+      out.resize(static_cast<std::size_t>(start[nblocks]));
+    }
+    for (int t = me; t < nthreads; t += team) {
+      int* at = count.data() + static_cast<std::size_t>(t) * nblocks;
+      for (const ContactCandidate& c : found[static_cast<std::size_t>(t)]) out[static_cast<std::size_t>(at[c.vblock]++)] = c;
+    }
   }
 #pragma omp parallel for schedule(static) if (nblocks > parallel_grain())
   for (int b = 0; b < nblocks; ++b)

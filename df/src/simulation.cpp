@@ -10,7 +10,6 @@
 #include <tuple>
 
 #include "block_terms.hpp"
-#include "dda/df/broad_phase.hpp"
 #include "dda/df/contact_detection.hpp"
 
 namespace dda::df {
@@ -87,18 +86,15 @@ int Simulation::joint_of(int vblock, int vertex, int eblock, int edge) const {
 void Simulation::detect_contacts() {
   const int nb = model_.block_count();
   const double d0 = model_.search_distance;
-  std::vector<Box2> boxes(nb);
   polygons_.resize(nb);
 #pragma omp parallel for schedule(static) if (nb > parallel_grain())
-  for (int i = 0; i < nb; ++i) {
-    boxes[i] = bounding_box(blocks_[i].vertices);
-    polygons_[i] = blocks_[i].vertices;  // into the vertex list of the last step: no allocation
-  }
+  for (int i = 0; i < nb; ++i) polygons_[i] = blocks_[i].vertices;  // into the last step's lists: no allocation
   // Contacts of the last step by (vertex block, vertex, edge block[, edge]):
   // a vertex that slides onto the next edge of the same block keeps its state.
   const ContactIndex last(contacts_);
   auto previous = [&last](int vb, int v, int eb) { return last.by_vertex(vb, v, eb) >= 0; };
-  const auto candidates = find_contacts(polygons_, broad_phase(boxes, 0.5 * d0), d0, previous);
+  const auto candidates = find_contacts(polygons_, near_list_.update(polygons_, d0), d0, previous);
+  timings_.near_searches = near_list_.searches();
 
   // Each contact reads only the blocks and the last step: in parallel. The
   // list is built in work_ (free between steps) and swapped in.

@@ -71,10 +71,36 @@ class ContactIndex {
 // Signed normal distance of p from edge a -> b (CCW edge of its block).
 double signed_distance(const Vec2& p, const Vec2& a, const Vec2& b);
 
-// All contacts between the given block pairs closer than `search_distance`.
-// `previous(vblock, vertex, eblock)` says whether the last step had a contact
-// with that vertex and block; it breaks near-ties of the entrance-edge rule
-// in favour of continuity (may be empty).
+// Vertex-edge pairs that may be in contact: for each pair of blocks, the
+// vertices of either block within `reach` of an edge of the other (distance
+// from the point to the segment). Grouped by block pair: the entries of
+// pairs[q] are entries[start[q]] .. entries[start[q + 1] - 1]; pairs with no
+// entry are left out.
+struct NearPairs {
+  struct Entry {
+    int vblock, vertex, eblock, edge;
+  };
+  double reach = 0;
+  std::vector<std::pair<int, int>> pairs;
+  std::vector<int> start{0};
+  std::vector<Entry> entries;
+};
+
+// The near pairs of the given block pairs (from the broad phase, with boxes
+// grown by reach / 2).
+NearPairs near_pairs(const std::vector<Polygon2>& blocks, const std::vector<std::pair<int, int>>& pairs,
+                     double reach);
+
+// All contacts among the near pairs closer than `search_distance` (at most
+// `near.reach`). `previous(vblock, vertex, eblock)` says whether the last
+// step had a contact with that vertex and block; it breaks near-ties of the
+// entrance-edge rule in favour of continuity (may be empty).
+std::vector<ContactCandidate> find_contacts(const std::vector<Polygon2>& blocks, const NearPairs& near,
+                                            double search_distance,
+                                            const std::function<bool(int, int, int)>& previous = {});
+
+// All contacts between the given block pairs closer than `search_distance`:
+// the above on near_pairs(blocks, pairs, search_distance).
 std::vector<ContactCandidate> find_contacts(
     const std::vector<Polygon2>& blocks, const std::vector<std::pair<int, int>>& pairs,
     double search_distance, const std::function<bool(int, int, int)>& previous = {});

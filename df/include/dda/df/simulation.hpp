@@ -25,6 +25,7 @@
 #include "dda/df/friction.hpp"
 #include "dda/df/linear_solver.hpp"
 #include "dda/df/model.hpp"
+#include "dda/df/near_list.hpp"
 #include "dda/df/step_timings.hpp"
 #include "dda/df/viscous_boundary.hpp"
 
@@ -192,6 +193,7 @@ class Simulation {
   // Scratch of detect_contacts(): the current polygons, kept so their
   // vertex lists are not allocated again every step.
   std::vector<Polygon2> polygons_;
+  NearList near_list_;  // vertex-edge pairs near enough to be in contact, kept between steps
   std::vector<Vec2> fixed_anchor_, fixed_pos_;          // fixed points: target and current
   std::vector<Vec2> load_pos_, measurement_pos_;
   std::vector<StepRecord> log_;

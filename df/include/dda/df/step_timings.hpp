@@ -11,6 +11,7 @@ struct StepTimings {
   double solve = 0;           // s: the linear solves
   double total = 0;           // s: whole steps, attempts thrown away included
   long solves = 0;            // linear solves done
+  long near_searches = 0;     // fresh searches for near pairs (the rest reused them)
 };
 
 // Adds the wall time of its own lifetime to a StepTimings field.

@@ -1,0 +1,49 @@
+#pragma once
+// The near pairs of a moving model, kept from step to step (a Verlet list).
+//
+// Finding which vertex lies near which edge means a broad phase over all
+// blocks and a scan of every vertex of a pair against every edge. Once a
+// model rests on its contacts the answer hardly changes from one step to the
+// next, and this search was a quarter of a step on a 10k-block layered model
+// (docs/solver2d.md). So the near pairs are found with a reach of the search
+// distance plus a skin, and kept until some vertex has moved more than half
+// the skin from where it was then.
+//
+// Kept that long, they still hold every vertex-edge pair within the search
+// distance: the distance from a point to a segment changes by at most the
+// point's displacement plus the larger of the ends' displacements, so a pair
+// within the search distance now was within search distance + skin then.
+// The contacts found from them are therefore the same as from a fresh
+// search, bit for bit (a test checks it); only the time differs.
+#include <vector>
+
+#include "dda/common/geometry.hpp"
+#include "dda/df/contact_detection.hpp"
+
+namespace dda::df {
+
+class NearList {
+ public:
+  // skin_factor: the skin as a multiple of the search distance.
+  explicit NearList(double skin_factor = 1.0) : skin_factor_(skin_factor) {}
+
+  // Near pairs holding every vertex-edge pair of `blocks` within
+  // `search_distance`: the kept ones, or found afresh when a vertex moved
+  // more than half the skin since they were found, the blocks or their
+  // vertices changed in number, or the search distance changed.
+  const NearPairs& update(const std::vector<Polygon2>& blocks, double search_distance);
+
+  // How many times update() searched afresh (for benchmarks and tests).
+  long searches() const { return searches_; }
+
+ private:
+  bool still_valid(const std::vector<Polygon2>& blocks, double search_distance) const;
+
+  double skin_factor_;
+  double search_distance_ = -1;
+  std::vector<Polygon2> anchor_;  // the vertices when the pairs were found
+  NearPairs near_;
+  long searches_ = 0;
+};
+
+}  // namespace dda::df
