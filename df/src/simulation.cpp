@@ -114,41 +114,51 @@ void Simulation::detect_contacts() {
   const auto candidates = find_contacts(polygons_, near_list_.update(polygons_, d0), d0, previous);
   timings_.near_searches = near_list_.searches();
 
-  // The geometry of a contact from where its blocks are now. A locked
-  // contact that was locked on this very edge keeps its reference point P0
-  // (its spring holds the shear offset since it locked); any other measures
-  // shear from where P is now.
-  auto refresh = [&](Contact& c, bool keep_reference) {
-    const BlockState& bi = blocks_[c.vblock];
-    const BlockState& bj = blocks_[c.eblock];
-    c.geo = contact_geometry(bi.vertices, bi.geometry.centroid, bj.vertices, bj.geometry.centroid, c.vertex, c.edge,
-                             c.ref_ratio);
-    if (!keep_reference) {
-      c.ref_ratio = c.geo.ratio0;
-      c.geo.ds0 = 0;
-      c.geo.gs = c.geo.gc;
-    }
-    c.length = tributary_length(bi.vertices, c.vertex, c.geo.tangent);
-  };
-
   // Once a model rests on its contacts, they are those of the last step, key
-  // for key: then they are brought up to date in place. Copying every
-  // contact into a new list (432 bytes each, 58k of them on a 10k-block
-  // model) was a third of the contact search. What stays is exactly what
-  // the general path below makes of a contact found again: everything
-  // carried over but the fields that live within one step.
+  // for key: then they stay where they are and only the fields that live
+  // within one step are reset, exactly what the general path below makes of
+  // a contact found again. Copying every contact into a new list (432 bytes
+  // each, 58k of them on a 10k-block model) was a third of the contact
+  // search.
+  const int n = static_cast<int>(candidates.size());
+  keep_reference_.resize(candidates.size());
   if (same_keys(candidates, contacts_)) {
-    const int n = static_cast<int>(contacts_.size());
 #pragma omp parallel for schedule(static) if (nb > parallel_grain())
     for (int k = 0; k < n; ++k) {
       Contact& c = contacts_[static_cast<std::size_t>(k)];
       c.friction_settled = true;
       c.broke = false;
-      refresh(c, c.state == ContactState::Locked);
+      keep_reference_[static_cast<std::size_t>(k)] = c.state == ContactState::Locked;
     }
-    return;
+  } else {
+    carry_over(candidates, last);
   }
 
+  // The geometry of each contact from where its blocks are now: the first
+  // part of forming its springs, timed apart from the search. A locked
+  // contact that was locked on this very edge keeps its reference point P0
+  // (its spring holds the shear offset since it locked); any other measures
+  // shear from where P is now.
+  const ScopedTimer timer(timings_.contact_geometry);
+#pragma omp parallel for schedule(static) if (nb > parallel_grain())
+  for (int k = 0; k < n; ++k) {
+    Contact& c = contacts_[static_cast<std::size_t>(k)];
+    const BlockState& bi = blocks_[c.vblock];
+    const BlockState& bj = blocks_[c.eblock];
+    c.geo = contact_geometry(bi.vertices, bi.geometry.centroid, bj.vertices, bj.geometry.centroid, c.vertex, c.edge,
+                             c.ref_ratio);
+    if (!keep_reference_[static_cast<std::size_t>(k)]) {
+      c.ref_ratio = c.geo.ratio0;
+      c.geo.ds0 = 0;
+      c.geo.gs = c.geo.gc;
+    }
+    c.length = tributary_length(bi.vertices, c.vertex, c.geo.tangent);
+  }
+}
+
+void Simulation::carry_over(const std::vector<ContactCandidate>& candidates, const ContactIndex& last) {
+  const int nb = model_.block_count();
+  const double d0 = model_.search_distance;
   // Each contact reads only the blocks and the last step: in parallel. The
   // list is built in work_ (free between steps) and swapped in.
   std::vector<Contact>& next = work_;
@@ -175,7 +185,7 @@ void Simulation::detect_contacts() {
       c.vertex = cand.vertex;
       c.eblock = cand.eblock;
       c.edge = cand.edge;
-      bool keep_reference = false;
+      keep_reference_[k] = false;
       const long guess = static_cast<long>(k) + shift;
       int ex = -1;
       if (guess >= 0 && guess < last_count && same_key(guess, c) && (guess + 1 == last_count || !same_key(guess + 1, c))) {
@@ -198,7 +208,7 @@ void Simulation::detect_contacts() {
         c.glued = old.glued;
         c.friction = old.friction;
         c.ref_ratio = old.ref_ratio;
-        keep_reference = ex >= 0 && old.state == ContactState::Locked;
+        keep_reference_[k] = ex >= 0 && old.state == ContactState::Locked;
       } else if (step_count_ == 0) {
         // Bonds exist only between faces in touch at the start.
         const JointProperties& j = model_.joints[c.joint];
@@ -212,7 +222,6 @@ void Simulation::detect_contacts() {
         // a 40-bed model never settled within the iteration limit.
         if (c.bonded || cand.dn <= model_.contact_tolerance) c.state = ContactState::Locked;
       }
-      refresh(c, keep_reference);
       next[k] = std::move(c);
     }
   }

@@ -27,11 +27,13 @@ struct ContactGeometry {
   double length = 0;             // edge length l, m
   Vec2 tangent{1, 0};            // unit A -> B
   double dn0 = 0;                // signed normal distance, m
-  Vector6d en, gn;               // d(dn)/d(d_i), d(dn)/d(d_j)
+  Vector6d en = Vector6d::Zero();  // d(dn)/d(d_i)
+  Vector6d gn = Vector6d::Zero();  // d(dn)/d(d_j)
   double ratio0 = 0;             // projection of P1 on the edge, A = 0, B = 1
   double ds0 = 0;                // tangential offset of P1 from the reference point, m
-  Vector6d es, gs;               // d(ds)/d(d_i), d(ds)/d(d_j)
-  Vector6d gc;                   // -T_j(Pc)^T t: edge motion at the projection Pc
+  Vector6d es = Vector6d::Zero();  // d(ds)/d(d_i)
+  Vector6d gs = Vector6d::Zero();  // d(ds)/d(d_j)
+  Vector6d gc = Vector6d::Zero();  // -T_j(Pc)^T t: edge motion at the projection Pc
 };
 
 struct Contact {

@@ -135,6 +135,9 @@ class Simulation {
  private:
   const StepRecord& advance(double max_dt);
   void detect_contacts();
+  // detect_contacts() when the contacts differ from the last step's: a new
+  // list, states carried over from the last step's contacts by key.
+  void carry_over(const std::vector<ContactCandidate>& candidates, const ContactIndex& last);
   int joint_of(int vblock, int vertex, int eblock, int edge) const;
   // The step's system afresh; friction[k] gets the friction force of
   // contact k as assembled (friction_force).
@@ -194,6 +197,7 @@ class Simulation {
   // vertex lists are not allocated again every step.
   std::vector<Polygon2> polygons_;
   NearList near_list_;  // vertex-edge pairs near enough to be in contact, kept between steps
+  std::vector<char> keep_reference_;  // per contact of detect_contacts(): keeps its shear reference point
   std::vector<Vec2> fixed_anchor_, fixed_pos_;          // fixed points: target and current
   std::vector<Vec2> load_pos_, measurement_pos_;
   std::vector<StepRecord> log_;

@@ -6,7 +6,8 @@
 namespace dda::df {
 
 struct StepTimings {
-  double contact_search = 0;  // s: broad + narrow phase and contact geometry
+  double contact_search = 0;  // s: broad + narrow phase, states carried over, and contact_geometry
+  double contact_geometry = 0;  // s: of it, each contact's linearised geometry from the new positions
   double assembly = 0;        // s: K and F, every open-close iteration
   double solve = 0;           // s: the linear solves
   double total = 0;           // s: whole steps, attempts thrown away included
