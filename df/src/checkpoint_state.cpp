@@ -62,6 +62,7 @@ void Simulation::restore(const SimulationState& s) {
   step_count_ = s.step_count;
   blocks_ = s.blocks;
   contacts_ = s.contacts;
+  contact_index_current_ = false;
   fixed_anchor_ = s.fixed_anchor;
   fixed_pos_ = s.fixed_pos;
   load_pos_ = s.load_pos;

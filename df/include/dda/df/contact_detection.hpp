@@ -52,6 +52,7 @@ class ContactIndex {
     }
     if (!std::is_sorted(keys_.begin(), keys_.end())) std::sort(keys_.begin(), keys_.end());
   }
+  std::size_t size() const { return keys_.size(); }
   // Index of the contact with all four, or -1 (the last one if several).
   int exact(int vblock, int vertex, int eblock, int edge) const;
   // Index of a contact of that vertex against that block, or -1 (the last

@@ -197,6 +197,10 @@ class Simulation {
   // vertex lists are not allocated again every step.
   std::vector<Polygon2> polygons_;
   NearList near_list_;  // vertex-edge pairs near enough to be in contact, kept between steps
+  // The contacts' keys for detect_contacts(), kept from the last detection
+  // while contact_index_current_ (restore() clears it).
+  ContactIndex contact_index_;
+  bool contact_index_current_ = false;
   std::vector<char> keep_reference_;  // per contact of detect_contacts(): keeps its shear reference point
   std::vector<Vec2> fixed_anchor_, fixed_pos_;          // fixed points: target and current
   std::vector<Vec2> load_pos_, measurement_pos_;
