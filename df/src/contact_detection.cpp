@@ -27,8 +27,8 @@ Vec2 outward_normal(const Polygon2& poly, int k) {
 // n when both of its edges leave it on the outside of the edge's line (n
 // points from the edge's block toward the vertex's block). A tolerance of a
 // few degrees keeps the two contacts of a block resting flat but slightly
-// rotated. Compared squared, without normalising (three square roots and
-// divisions per candidate, a tenth of the search).
+// rotated. Compared squared, without normalising: three square roots and
+// divisions fewer per candidate, and tens of thousands of candidates a step.
 bool admissible(const Polygon2& poly, int v, const Vec2& n) {
   constexpr double kSinTol = 0.0871557;  // sin(5 degrees)
   const int m = static_cast<int>(poly.size());
