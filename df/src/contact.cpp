@@ -20,7 +20,7 @@ ContactGeometry contact_geometry(const Polygon2& vi, const Vec2& ci, const Polyg
                                  int edge, double ref_ratio) {
   const Vec2& p = vi[vertex];
   const Vec2& a = vj[edge];
-  const Vec2& b = vj[(edge + 1) % vj.size()];
+  const Vec2& b = vj[edge + 1 == static_cast<int>(vj.size()) ? 0 : edge + 1];  // no division: once per contact per step
   const Vec2 e = b - a;
   ContactGeometry g;
   g.length = e.norm();
@@ -58,7 +58,7 @@ double tributary_length(const Polygon2& vi, int vertex, const Vec2& edge_tangent
   constexpr double kSinTol = 0.173648;  // sin(10 degrees)
   const int n = static_cast<int>(vi.size());
   double len = 0;
-  for (const int other : {(vertex + n - 1) % n, (vertex + 1) % n}) {
+  for (const int other : {vertex == 0 ? n - 1 : vertex - 1, vertex + 1 == n ? 0 : vertex + 1}) {
     const Vec2 side = vi[other] - vi[vertex];
     const double l = side.norm();
     if (l > 0 && std::abs(cross(side / l, edge_tangent)) <= kSinTol) len += 0.5 * l;
