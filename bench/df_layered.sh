@@ -8,9 +8,9 @@
 # `dda dc`, and times STEPS steps of each from rest with bench_df (the
 # gravity transient, the hardest part of the run: 10-15 solves a step).
 # Prints blocks, contacts, solves and ms per step, the shares of contact
-# search, contact geometry, assembly and solve, the mean step (dt_us, microseconds of model
-# time: the step control sets it, and a shorter step costs less), and the
-# growth exponent of the cost per step between sizes.
+# search, contact geometry, assembly and solve, the mean step (dt_us,
+# microseconds of model time: the step control sets it, and a shorter step
+# costs less), and the growth exponent of the cost per step between sizes.
 #
 #   bash bench/df_layered.sh [STEPS]          # default 30
 #   bash bench/df_layered.sh STEPS REST       # also STEPS steps after REST s of model time

@@ -28,8 +28,8 @@ Matrix26d t_matrix(const Vec2& centroid, const Vec2& p);
 
 // T^T f: the block's generalised force of a force f at p, or the gradient
 // of f . u(p) with respect to the block's unknowns. Written out (inline),
-// as contact geometry needs five of them per contact per step and forming
-// T first cost twice as long.
+// as contact geometry needs five of them per contact per step: forming T
+// first made contact_geometry 5.6 % of a 10k-block step at rest, not 3.4 %.
 inline Vector6d t_transpose_times(const Vec2& centroid, const Vec2& p, const Vec2& f) {
   const double X = p.x() - centroid.x(), Y = p.y() - centroid.y();
   Vector6d g;
