@@ -128,13 +128,9 @@ double signed_distance(const Vec2& p, const Vec2& a, const Vec2& b) {
   return cross(p - a, e) / e.norm();
 }
 
-NearPairs near_pairs(const std::vector<Polygon2>& blocks, const std::vector<std::pair<int, int>>& pairs,
-                     double reach) {
+NearPairs near_pairs(const std::vector<Polygon2>& blocks, const std::vector<Box2>& boxes,
+                     const std::vector<std::pair<int, int>>& pairs, double reach) {
   const int npairs = static_cast<int>(pairs.size());
-  const int nblocks = static_cast<int>(blocks.size());
-  std::vector<Box2> boxes(blocks.size());
-#pragma omp parallel for schedule(static) if (nblocks > parallel_grain())
-  for (int b = 0; b < nblocks; ++b) boxes[b] = bounding_box(blocks[b]);
   // Per thread: its pairs (index into `pairs`, entry count) and entries, in
   // order; joined in thread order, which is pair order (static schedule).
   struct Part {
@@ -201,7 +197,10 @@ NearPairs near_pairs(const std::vector<Polygon2>& blocks, const std::vector<std:
 std::vector<ContactCandidate> find_contacts(const std::vector<Polygon2>& blocks,
                                             const std::vector<std::pair<int, int>>& pairs, double search_distance,
                                             const std::function<bool(int, int, int)>& previous) {
-  return find_contacts(blocks, near_pairs(blocks, pairs, search_distance), search_distance, previous);
+  std::vector<Box2> boxes;
+  boxes.reserve(blocks.size());
+  for (const Polygon2& b : blocks) boxes.push_back(bounding_box(b));
+  return find_contacts(blocks, near_pairs(blocks, boxes, pairs, search_distance), search_distance, previous);
 }
 
 std::vector<ContactCandidate> find_contacts(const std::vector<Polygon2>& blocks, const NearPairs& near,

@@ -42,7 +42,7 @@ const NearPairs& NearList::update(const std::vector<Polygon2>& blocks, double se
   }
   // A vertex within reach of an edge of another block lies within reach of
   // that block's box: the boxes, each grown by half of it, overlap.
-  near_ = near_pairs(blocks, broad_phase(boxes, 0.5 * reach), reach);
+  near_ = near_pairs(blocks, boxes, broad_phase(boxes, 0.5 * reach), reach);
   search_distance_ = search_distance;
   ++searches_;
   return near_;

@@ -88,9 +88,9 @@ struct NearPairs {
 };
 
 // The near pairs of the given block pairs (from the broad phase, with boxes
-// grown by reach / 2).
-NearPairs near_pairs(const std::vector<Polygon2>& blocks, const std::vector<std::pair<int, int>>& pairs,
-                     double reach);
+// grown by reach / 2); boxes[b] is the bounding box of blocks[b].
+NearPairs near_pairs(const std::vector<Polygon2>& blocks, const std::vector<Box2>& boxes,
+                     const std::vector<std::pair<int, int>>& pairs, double reach);
 
 // All contacts among the near pairs closer than `search_distance` (at most
 // `near.reach`). `previous(vblock, vertex, eblock)` says whether the last
@@ -101,7 +101,7 @@ std::vector<ContactCandidate> find_contacts(const std::vector<Polygon2>& blocks,
                                             const std::function<bool(int, int, int)>& previous = {});
 
 // All contacts between the given block pairs closer than `search_distance`:
-// the above on near_pairs(blocks, pairs, search_distance).
+// the above on near_pairs(blocks, their boxes, pairs, search_distance).
 std::vector<ContactCandidate> find_contacts(
     const std::vector<Polygon2>& blocks, const std::vector<std::pair<int, int>>& pairs,
     double search_distance, const std::function<bool(int, int, int)>& previous = {});
