@@ -177,20 +177,33 @@ void BlockSystem::build_rounds() {
     if (colour[k] >= 0) round_item_[fill[colour[k]]++] = k;
 }
 
-void BlockSystem::scatter(const std::function<void(int)>& f) {
+void BlockSystem::scatter(const std::function<void(int)>& f, const std::vector<std::uint8_t>* only) {
   const int rounds_n = rounds();
   std::exception_ptr error;
-  // Small loops are not worth waking the other threads for; the serial
-  // loops go through the items in the same order per block, so the result
-  // is the same.
+  // Items left out are skipped before the call: the rounds stay those of all
+  // the items, so each block still sees its items in the same order.
+  auto call = [&](int k) {
+    if (!only || (*only)[k]) f(k);
+  };
+  // Small loops are not worth waking the other threads for (with `only`,
+  // counting the items flagged: a dozen rounds of a few straddling items
+  // each cost more in barriers than they do in work); the serial loops go
+  // through the items in the same order per block, so the result is the
+  // same.
   const int small = 2 * grain;
-  if (part_start_.empty() || part_start_[kParts] < small) {
-    for (const int k : part_item_) f(k);
+  auto count = [&](const std::vector<int>& items) {
+    if (!only) return static_cast<int>(items.size());
+    int n = 0;
+    for (const int k : items) n += (*only)[k] != 0;
+    return n;
+  };
+  if (part_start_.empty() || count(part_item_) < small) {
+    for (const int k : part_item_) call(k);
   } else {
 #pragma omp parallel for schedule(dynamic, 1)
     for (int p = 0; p < kParts; ++p) {
       try {
-        for (int q = part_start_[p]; q < part_start_[p + 1]; ++q) f(part_item_[q]);
+        for (int q = part_start_[p]; q < part_start_[p + 1]; ++q) call(part_item_[q]);
       } catch (...) {
 #pragma omp critical(dda_df_scatter_error)
         if (!error) error = std::current_exception();
@@ -198,8 +211,8 @@ void BlockSystem::scatter(const std::function<void(int)>& f) {
     }
   }
   if (error) std::rethrow_exception(error);
-  if (static_cast<int>(round_item_.size()) < small) {
-    for (const int k : round_item_) f(k);
+  if (count(round_item_) < small) {
+    for (const int k : round_item_) call(k);
   } else {
     // Every round shared out, small ones too: the threads are awake and the
     // barrier after a round is paid either way (a round run by one thread
@@ -210,7 +223,7 @@ void BlockSystem::scatter(const std::function<void(int)>& f) {
 #pragma omp for schedule(static)
       for (int q = round_start_[r]; q < round_start_[r + 1]; ++q) {
         try {
-          f(round_item_[q]);
+          call(round_item_[q]);
         } catch (...) {
 #pragma omp critical(dda_df_scatter_error)
           if (!error) error = std::current_exception();
@@ -219,7 +232,7 @@ void BlockSystem::scatter(const std::function<void(int)>& f) {
     }
   }
   if (error) std::rethrow_exception(error);
-  for (const int k : tail_) f(k);
+  for (const int k : tail_) call(k);
 }
 
 int BlockSystem::slot(int i, int j) const {

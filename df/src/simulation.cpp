@@ -272,16 +272,16 @@ void Simulation::assemble(double dt, const std::vector<Contact>& contacts, std::
 
 void Simulation::reassemble(double dt, const std::vector<Contact>& contacts,
                             const std::vector<std::pair<int, Contact>>& before, const std::vector<int>& in_before,
-                            std::vector<double>& friction) {
+                            const std::vector<std::uint8_t>& revisit, std::vector<double>& friction) {
   // F is updated, not formed again: between iterates only the contacts that
   // changed state and the friction of the sliding ones differ (a quarter of
   // the contacts or less; forming F afresh spent as long again on the
   // others). A contact that changed state takes its old forces out and puts
   // its new ones in. The updates go through the same rounds as the
-  // assembly, so F does not depend on the thread count.
-  system_.scatter([&](int k) {
+  // assembly, so F does not depend on the thread count; `revisit` flags those
+  // contacts, so that the others (most of them) are not even read.
+  auto update = [&](int k) {
     const Contact& c = contacts[k];
-    if (in_before[k] < 0 && c.state != ContactState::Sliding) return;
     const ContactLaw law = law_of(c);
     const double f = friction_force(c, law, dt);
     if (in_before[k] >= 0) {
@@ -291,7 +291,8 @@ void Simulation::reassemble(double dt, const std::vector<Contact>& contacts,
       add_friction_change(c, f - friction[k], system_);
     }
     friction[k] = f;
-  });
+  };
+  system_.scatter(update, &revisit);
   // K: only the springs of the contacts that changed state differ (from a
   // few thousand of tens of thousands in the first iterates to none once
   // only friction is settling); they are swapped serially, in order, so K
@@ -332,6 +333,7 @@ bool Simulation::open_close(double dt, std::vector<Contact>& contacts, Eigen::Ve
   };
   std::vector<Springs> assembled(contacts.size());
   std::vector<std::uint8_t> moved(contacts.size(), 0);
+  std::vector<std::uint8_t> revisit(contacts.size(), 0);  // changed state or sliding: reassemble's contacts
   // Trial solves (linear_solver.hpp) while the states change; an iterate
   // that settles on a trial solve is solved again at full accuracy and
   // checked once more, and the last iterate allowed is always a full solve.
@@ -347,7 +349,7 @@ bool Simulation::open_close(double dt, std::vector<Contact>& contacts, Eigen::Ve
       if (iterations == 1 || 8 * before.size() > contacts.size()) {
         assemble(dt, contacts, friction);
       } else {
-        reassemble(dt, contacts, before, in_before, friction);
+        reassemble(dt, contacts, before, in_before, revisit, friction);
       }
     }
     {
@@ -372,6 +374,7 @@ bool Simulation::open_close(double dt, std::vector<Contact>& contacts, Eigen::Ve
       changed = changed || flipped;
       friction_lags = friction_lags || !c.friction_settled;
       moved[k] = c.state != old;
+      revisit[k] = moved[k] || c.state == ContactState::Sliding;
       if (moved[k]) assembled[k] = springs;
     }
     for (const auto& b : before) in_before[b.first] = -1;

@@ -2,9 +2,13 @@
 // CHOLMOD's analysis reuse over a run, and the declared-pattern block system.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdint>
 #include <random>
+#include <vector>
 
 #include "df_test_models.hpp"
+#include "forced_threads.hpp"
 #include "dda/common/error.hpp"
 #include "dda/df/block_system.hpp"
 #include "dda/df/linear_solver.hpp"
@@ -241,6 +245,62 @@ TEST(BlockSystemPattern, CouplingsOutsideThePatternAndProductsAgree) {
   sys.reset(5, {{0, 1}, {3, 1}, {1, 0}});
   EXPECT_EQ(sys.pattern_id(), id);
   EXPECT_EQ(sys.csc().nonZeros(), 5 * 21 + 3 * 36);
+}
+
+// scatter(f, only) calls f for the flagged items alone, and each block sees
+// them in the order the full scatter gives it (which makes the assembly
+// independent of the thread count): checked on the parallel paths (two
+// threads, grain 1) and the serial ones, on items that straddle the ranges
+// of blocks as well as items within one.
+TEST(BlockSystemScatter, FlaggedItemsInTheOrderOfTheFullScatter) {
+  std::mt19937 rng(11);
+  const int nb = 400;
+  std::uniform_int_distribution<int> block(0, nb - 1), near(-3, 3);
+  std::vector<std::pair<int, int>> items;
+  for (int k = 0; k < 3000; ++k) {
+    const int a = block(rng);
+    const int b = k % 5 == 0 ? block(rng) : std::clamp(a + near(rng), 0, nb - 1);  // some far apart
+    items.emplace_back(a, b);
+  }
+  std::vector<std::uint8_t> only(items.size());
+  for (auto& f : only) f = rng() % 3 == 0;
+  for (const int threads : {2, 1}) {
+    const testing::ForcedThreads forced(threads);
+    BlockSystem sys;
+    sys.reset(nb, items);
+    auto visits = [&](const std::vector<std::uint8_t>* flags) {
+      std::vector<std::vector<int>> seen(nb);  // per block, the items in the order f met them
+      sys.scatter(
+          [&](int k) {
+            seen[items[k].first].push_back(k);
+            if (items[k].second != items[k].first) seen[items[k].second].push_back(k);
+          },
+          flags);
+      return seen;
+    };
+    const auto all = visits(nullptr), flagged = visits(&only);
+    std::size_t calls = 0, expected_calls = 0;
+    for (int i = 0; i < nb; ++i) {
+      std::vector<int> kept;
+      for (const int k : all[i])
+        if (only[k]) kept.push_back(k);
+      EXPECT_EQ(flagged[i], kept) << "block " << i << ", " << threads << " threads";
+      calls += flagged[i].size();
+      expected_calls += kept.size();
+    }
+    EXPECT_EQ(calls, expected_calls);
+    EXPECT_GT(sys.rounds(), 1);  // the straddling items ran in rounds
+  }
+  // Serially as well (a grain above the item count).
+  const int saved = parallel_grain();
+  set_parallel_grain(100000);
+  BlockSystem sys;
+  sys.reset(nb, items);
+  int called = 0, flagged = 0;
+  sys.scatter([&](int k) { called += only[k] ? 1 : 1000; }, &only);
+  for (const auto f : only) flagged += f;
+  set_parallel_grain(saved);
+  EXPECT_EQ(called, flagged);
 }
 
 // V1 (CASES.md) at phi = 20 with the solver forced to PCG: the same 1 % as

@@ -73,8 +73,11 @@ class BlockSystem {
 
   // Calls f(k) for every item of the last reset(blocks, items), in parallel
   // rounds (see above). f may write the diagonal blocks and rhs of the two
-  // blocks of item k and their coupling, nothing else shared.
-  void scatter(const std::function<void(int)>& f);
+  // blocks of item k and their coupling, nothing else shared. With `only`
+  // (one flag per item), only the items flagged non-zero: an update that
+  // concerns a few items (the open-close iterates) does not call f for the
+  // others, and the order per block is still fixed.
+  void scatter(const std::function<void(int)>& f, const std::vector<std::uint8_t>* only = nullptr);
   int rounds() const { return static_cast<int>(round_start_.size()) - 1; }
 
   // Lower triangle in compressed column form (for the solver): a new matrix.

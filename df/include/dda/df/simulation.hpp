@@ -145,10 +145,12 @@ class Simulation {
   // The system of the next open-close iterate from the last one: `before`
   // holds the contacts whose state changed since, as they were assembled
   // (index, contact), and in_before[k] is contact k's position in it (-1
-  // for the others); `friction` is as assemble() leaves it, and is kept up
-  // to date.
+  // for the others); revisit[k] flags the contacts in `before` and the
+  // sliding ones, the only ones whose forces can differ; `friction` is as
+  // assemble() leaves it, and is kept up to date.
   void reassemble(double dt, const std::vector<Contact>& contacts, const std::vector<std::pair<int, Contact>>& before,
-                  const std::vector<int>& in_before, std::vector<double>& friction);
+                  const std::vector<int>& in_before, const std::vector<std::uint8_t>& revisit,
+                  std::vector<double>& friction);
   // The open-close iteration of one attempt; true when the states settled.
   // With trial_first false the first solve is a full one (see quiet_step).
   bool open_close(double dt, std::vector<Contact>& contacts, Eigen::VectorXd& d, int& iterations,
