@@ -1,7 +1,9 @@
 // Physics extensions of the time stepper: bolts and the energy ledger
 // (members of Simulation kept out of simulation.cpp, which is shared).
 #include <Eigen/Cholesky>
+#include <array>
 #include <cmath>
+#include <cstddef>
 #include <vector>
 
 #include "dda/df/simulation.hpp"
@@ -9,6 +11,20 @@
 
 namespace dda::df {
 namespace {
+
+// Per-contact terms of the energy ledger, evaluated in parallel (each reads
+// only its own contact) into `terms`, one row per contact; the caller sums
+// them serially in contact order, so the ledger does not depend on the
+// thread count. A serial loop over 58k contacts of 432 bytes each cost
+// about half a millisecond per sum on the 10k layered model.
+template <int Columns, class Term>
+void contact_terms(const std::vector<Contact>& contacts, std::vector<std::array<double, Columns>>& terms, bool parallel,
+                   Term&& term) {
+  terms.resize(contacts.size());
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(contacts.size());
+#pragma omp parallel for schedule(static) if (parallel)
+  for (std::ptrdiff_t k = 0; k < n; ++k) terms[k] = term(contacts[k]);
+}
 
 double strain_energy(const BlockState& b, const Matrix3d& emat) {
   return 0.5 * b.geometry.area * b.stress.dot(emat.ldlt().solve(b.stress));
@@ -149,11 +165,14 @@ void Simulation::before_accept(double dt, const Eigen::VectorXd& d, const std::v
       e.load_work += w.input_work;
     }
   }
-  for (const Contact& c : contacts) {
-    if (c.state != ContactState::Sliding) continue;
+  // (Adding the zero of a contact not sliding leaves the sum as it was.)
+  std::vector<std::array<double, 1>> friction_loss;
+  contact_terms<1>(contacts, friction_loss, nb > parallel_grain(), [&](const Contact& c) {
+    if (c.state != ContactState::Sliding) return std::array<double, 1>{0.0};
     const double slip = c.geo.es.dot(di(c.vblock)) + c.geo.gc.dot(di(c.eblock));
-    e.friction += std::abs(c.shear_force * slip);
-  }
+    return std::array<double, 1>{std::abs(c.shear_force * slip)};
+  });
+  for (const auto& t : friction_loss) e.friction += t[0];
   for (std::size_t k = 0; k < bolts_.size(); ++k) {
     const Bolt& b = model_.bolts[k];
     BoltState& s = bolts_[k];
@@ -196,10 +215,19 @@ void Simulation::store_energy(EnergyRecord& e) const {
     e.kinetic += 0.5 * twice_kinetic[i];
     e.elastic += strain[i];
   }
-  for (const Contact& c : contacts_) {
-    if (c.state == ContactState::Open) continue;
-    e.contact += c.normal_force * c.normal_force / (2 * model_.joint_pn[c.joint]);
-    if (c.state == ContactState::Locked) e.contact += c.shear_force * c.shear_force / (2 * model_.joint_ps[c.joint]);
+  // Normal and shear springs as two terms, added one after the other (a
+  // zero term leaves the sum as it was).
+  std::vector<std::array<double, 2>> springs;
+  contact_terms<2>(contacts_, springs, nb > parallel_grain(), [&](const Contact& c) {
+    std::array<double, 2> t{0.0, 0.0};
+    if (c.state == ContactState::Open) return t;
+    t[0] = c.normal_force * c.normal_force / (2 * model_.joint_pn[c.joint]);
+    if (c.state == ContactState::Locked) t[1] = c.shear_force * c.shear_force / (2 * model_.joint_ps[c.joint]);
+    return t;
+  });
+  for (const auto& t : springs) {
+    e.contact += t[0];
+    e.contact += t[1];
   }
   for (std::size_t k = 0; k < model_.fixed_points.size(); ++k) {
     const FixedPoint& f = model_.fixed_points[k];
