@@ -217,4 +217,34 @@ ContactState update_contact(Contact& c, const ContactLaw& law, double dt, const 
   return ContactState::Sliding;
 }
 
+ContactIterationState iteration_state(const Contact& c) {
+  ContactIterationState s;
+  s.state = c.state;
+  s.slip_sign = c.slip_sign;
+  s.friction_settled = c.friction_settled;
+  s.bonded = c.bonded;
+  s.broke = c.broke;
+  s.ref_ratio = c.ref_ratio;
+  s.normal_force = c.normal_force;
+  s.shear_force = c.shear_force;
+  s.slip_velocity = c.slip_velocity;
+  s.ds0 = c.geo.ds0;
+  s.gs = c.geo.gs;
+  return s;
+}
+
+void restore_iteration_state(Contact& c, const ContactIterationState& s) {
+  c.state = s.state;
+  c.slip_sign = s.slip_sign;
+  c.friction_settled = s.friction_settled;
+  c.bonded = s.bonded;
+  c.broke = s.broke;
+  c.ref_ratio = s.ref_ratio;
+  c.normal_force = s.normal_force;
+  c.shear_force = s.shear_force;
+  c.slip_velocity = s.slip_velocity;
+  c.geo.ds0 = s.ds0;
+  c.geo.gs = s.gs;
+}
+
 }  // namespace dda::df

@@ -13,17 +13,6 @@
 #include "dda/df/contact_detection.hpp"
 
 namespace dda::df {
-namespace {
-
-// to = from, element by element into the storage `to` already has: copying
-// into a fresh vector would fault its tens of MB in again on every step.
-void copy_contacts(const std::vector<Contact>& from, std::vector<Contact>& to, bool parallel) {
-  to.resize(from.size());
-#pragma omp parallel for schedule(static) if (parallel)
-  for (std::size_t k = 0; k < from.size(); ++k) to[k] = from[k];
-}
-
-}  // namespace
 
 Simulation::Simulation(Model model, std::unique_ptr<LinearSolver> solver)
     : model_(std::move(model)), solver_(std::move(solver)) {
@@ -405,6 +394,19 @@ bool Simulation::open_close(double dt, std::vector<Contact>& contacts, Eigen::Ve
   return false;
 }
 
+void Simulation::save_iteration_states() {
+  saved_states_.resize(contacts_.size());
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(contacts_.size());
+#pragma omp parallel for schedule(static) if (model_.block_count() > parallel_grain())
+  for (std::ptrdiff_t k = 0; k < n; ++k) saved_states_[k] = iteration_state(contacts_[k]);
+}
+
+void Simulation::restore_iteration_states() {
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(contacts_.size());
+#pragma omp parallel for schedule(static) if (model_.block_count() > parallel_grain())
+  for (std::ptrdiff_t k = 0; k < n; ++k) restore_iteration_state(contacts_[k], saved_states_[k]);
+}
+
 double Simulation::max_vertex_displacement(const Eigen::VectorXd& d) const {
   // A maximum does not depend on the order it is taken in: in parallel. (A
   // NaN displacement is skipped in any order: std::max(worst, NaN) is worst.)
@@ -432,8 +434,10 @@ const StepRecord& Simulation::advance(double max_dt) {
     if (!started_) settle();
     detect_contacts();
   }
-  // contacts_ stays the start of the step (an attempt thrown away starts
-  // again from it); each attempt works on a copy in work_.
+  // Each attempt works on contacts_ in place; one thrown away (or one that
+  // throws) puts back what the iteration changed, so the next starts from
+  // the contacts of the start of the step.
+  save_iteration_states();
   const Control& ctl = model_.control;
   const double dt_min = ctl.min_dt_ratio * ctl.dt;
   StepRecord rec;
@@ -441,7 +445,6 @@ const StepRecord& Simulation::advance(double max_dt) {
   for (;;) {
     const bool shortened = max_dt < dt_;
     const double dt = std::min(dt_, max_dt);
-    copy_contacts(contacts_, work_, model_.block_count() > parallel_grain());
     // The first solve starts from the motion the last step predicts. Once a
     // model has come to rest under its loads this saves a third of the PCG
     // iterations of that solve (28 to 18 on the 10k layered model), against
@@ -449,9 +452,16 @@ const StepRecord& Simulation::advance(double max_dt) {
     // well as that (docs/solver2d.md).
     solver_->set_warm_start({predicted_step(dt), dt});
     int iterations = 0;
-    const bool settled = open_close(dt, work_, d, iterations, !quiet_step());
-    const double moved = max_vertex_displacement(d);
-    check_runaway(d, moved, dt, dt <= dt_min * (1 + 1e-9));
+    bool settled = false;
+    double moved = 0;
+    try {
+      settled = open_close(dt, contacts_, d, iterations, !quiet_step());
+      moved = max_vertex_displacement(d);
+      check_runaway(d, moved, dt, dt <= dt_min * (1 + 1e-9));
+    } catch (...) {
+      restore_iteration_states();  // a checkpoint written after this holds the step's start
+      throw;
+    }
     const bool too_far = moved > max_step_displacement_;
     if ((!settled || too_far) && dt > dt_min * (1 + 1e-9)) {
       // Redo with a smaller step: cut to what the displacement limit
@@ -459,12 +469,13 @@ const StepRecord& Simulation::advance(double max_dt) {
       const double factor = too_far ? std::min(0.5, 0.9 * max_step_displacement_ / moved) : 1.0 / 3.0;
       dt_ = std::max(dt_min, dt * factor);
       ++rec.dt_cuts;
+      restore_iteration_states();
       continue;
     }
     rec.open_close_iterations = iterations;
     rec.converged = settled;
     rec.max_displacement = moved;
-    accept(dt, d, work_, rec);
+    accept(dt, d, contacts_, rec);
     // Easy steps let dt grow back gradually toward the user's dt.
     if (!shortened && rec.dt_cuts == 0) dt_ = std::min(ctl.dt, dt_ * 1.1);
     break;
@@ -529,9 +540,9 @@ void Simulation::accept(double dt, const Eigen::VectorXd& d, std::vector<Contact
   rec.open += open;
   rec.sliding += sliding;
   rec.locked += locked;
-  // A swap, not a move: the caller's vector keeps the old list's memory for
-  // the next step (see work_).
-  contacts_.swap(contacts);
+  // A swap, not a move: the caller's vector keeps the old list's memory
+  // (settle's working copy; a step works on contacts_ itself).
+  if (&contacts != &contacts_) contacts_.swap(contacts);
   time_ += dt;
   ++step_count_;
   rec.step = step_count_;

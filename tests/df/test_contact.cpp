@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 
 #include "df_test_models.hpp"
@@ -177,6 +178,64 @@ void expect_one_contact(const std::vector<ContactCandidate>& found, int vblock, 
   EXPECT_EQ(found[0].eblock, eblock);
   EXPECT_EQ(found[0].edge, edge);
   EXPECT_NEAR(found[0].dn, dn, 1e-12);
+}
+
+// A step's attempt updates the contacts in place; one thrown away puts back
+// what the iteration changed (ContactIterationState). Through updates that
+// close, lock, slide, stick and break a bond, restoring must give the
+// contact back exactly, every field of it: a field update_contact writes
+// and the saved state leaves out would make a redone step start from the
+// thrown-away attempt. (A new field of Contact belongs in `same` below.)
+TEST(ContactIterationState, RestoringUndoesEveryUpdate) {
+  auto same = [](const Contact& a, const Contact& b) {
+    const ContactGeometry &g = a.geo, &h = b.geo;
+    return a.vblock == b.vblock && a.vertex == b.vertex && a.eblock == b.eblock && a.edge == b.edge &&
+           a.joint == b.joint && a.state == b.state && a.ref_ratio == b.ref_ratio && a.slip_sign == b.slip_sign &&
+           a.normal_force == b.normal_force && a.shear_force == b.shear_force &&
+           a.slip_velocity == b.slip_velocity && a.friction_settled == b.friction_settled && a.length == b.length &&
+           a.bonded == b.bonded && a.broke == b.broke && a.glued == b.glued &&
+           a.friction.theta == b.friction.theta && a.friction.slip == b.friction.slip &&
+           a.friction.extra == b.friction.extra && g.length == h.length && g.tangent == h.tangent &&
+           g.dn0 == h.dn0 && g.en == h.en && g.gn == h.gn && g.ratio0 == h.ratio0 && g.ds0 == h.ds0 &&
+           g.es == h.es && g.gs == h.gs && g.gc == h.gc;
+  };
+  JointProperties joint;
+  joint.friction_deg = 30;
+  joint.cohesion = 1e5;
+  joint.tensile_strength = 1e5;
+  const auto friction = make_friction_law(joint);
+  const ContactLaw law{1e9, 4e8, joint.tensile_strength, friction.get(), 1e-9};
+  std::mt19937 rng(5);
+  std::normal_distribution<double> u(0, 1);
+  int changed = 0, states_seen[3] = {0, 0, 0};
+  for (const ContactState start : {ContactState::Open, ContactState::Locked, ContactState::Sliding}) {
+    for (const bool bonded : {false, true}) {
+      for (int trial = 0; trial < 40; ++trial) {
+        Contact c = corner_on_face();
+        c.state = start;
+        c.bonded = bonded;
+        c.length = 0.5;
+        c.slip_sign = start == ContactState::Sliding ? 1 : 0;
+        c.geo.ds0 = 1e-6 * u(rng);
+        c.normal_force = 1e5 * std::abs(u(rng));
+        c.friction.slip = 0.01;
+        const Contact before = c;
+        const ContactIterationState saved = iteration_state(c);
+        const double scale = std::pow(10.0, -6 + trial % 4);  // from 1 um to 1 mm
+        const Vector6d di = scale * Vector6d::NullaryExpr([&] { return u(rng); });
+        const Vector6d dj = scale * Vector6d::NullaryExpr([&] { return u(rng); });
+        c.state = update_contact(c, law, 1e-3, di, dj, trial % 5 == 0);
+        ++states_seen[static_cast<int>(c.state)];
+        changed += !same(c, before);
+        restore_iteration_state(c, saved);
+        EXPECT_TRUE(same(c, before)) << "from " << to_string(start) << (bonded ? ", bonded" : "") << ", trial "
+                                     << trial;
+      }
+    }
+  }
+  // The updates did change the contacts, into every state.
+  EXPECT_GT(changed, 200);
+  for (const int n : states_seen) EXPECT_GT(n, 0);
 }
 
 TEST(EntranceEdge, VertexEntersThroughTopEdge) {

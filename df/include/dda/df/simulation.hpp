@@ -165,6 +165,9 @@ class Simulation {
   void record_measurements();
   ContactLaw law_of(const Contact& c) const;
   double max_vertex_displacement(const Eigen::VectorXd& d) const;
+  // contacts_' iteration states into saved_states_, and back.
+  void save_iteration_states();
+  void restore_iteration_states();
   // Where an iterative solve of a step of length dt starts: every block
   // keeps its velocity and acceleration, d = v dt + a dt^2 / 2.
   Eigen::VectorXd predicted_step(double dt) const;
@@ -191,10 +194,12 @@ class Simulation {
   std::vector<BlockState> blocks_;
   std::vector<Contact> contacts_;                       // of the last accepted step
   // Scratch, not state (dead between steps): the list detect_contacts()
-  // builds before swapping it into contacts_, then the contacts of the
-  // attempt in progress (advance() copies contacts_ into it). Kept so that a
-  // list of tens of MB is neither allocated nor faulted in again every step.
+  // builds before swapping it into contacts_. Kept so that a list of tens of
+  // MB is neither allocated nor faulted in again every step.
   std::vector<Contact> work_;
+  // What the step's iteration changes in each contact, as it was at the
+  // start of the step: an attempt thrown away puts it back.
+  std::vector<ContactIterationState> saved_states_;
   // Scratch of detect_contacts(): the current polygons, kept so their
   // vertex lists are not allocated again every step.
   std::vector<Polygon2> polygons_;
