@@ -72,24 +72,6 @@ int Simulation::joint_of(int vblock, int vertex, int eblock, int edge) const {
   return model_.joint_for_set(-1);
 }
 
-namespace {
-
-// Whether the candidates are the contacts, key for key and in order.
-bool same_keys(const std::vector<ContactCandidate>& candidates, const std::vector<Contact>& contacts) {
-  if (candidates.size() != contacts.size()) return false;
-  const long n = static_cast<long>(contacts.size());
-  long differ = 0;
-#pragma omp parallel for schedule(static) reduction(+ : differ) if (n > 4 * parallel_grain())
-  for (long k = 0; k < n; ++k) {
-    const ContactCandidate& a = candidates[static_cast<std::size_t>(k)];
-    const Contact& b = contacts[static_cast<std::size_t>(k)];
-    differ += a.vblock != b.vblock || a.vertex != b.vertex || a.eblock != b.eblock || a.edge != b.edge;
-  }
-  return differ == 0;
-}
-
-}  // namespace
-
 void Simulation::detect_contacts() {
   const int nb = model_.block_count();
   const double d0 = model_.search_distance;
@@ -116,7 +98,7 @@ void Simulation::detect_contacts() {
   // search.
   const int n = static_cast<int>(candidates.size());
   keep_reference_.resize(candidates.size());
-  if (same_keys(candidates, contacts_)) {
+  if (last.same_keys_in_order(candidates)) {
 #pragma omp parallel for schedule(static) if (nb > parallel_grain())
     for (int k = 0; k < n; ++k) {
       Contact& c = contacts_[static_cast<std::size_t>(k)];

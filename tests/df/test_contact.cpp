@@ -7,8 +7,10 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <tuple>
 
 #include "df_test_models.hpp"
+#include "forced_threads.hpp"
 #include "dda/df/block_kinematics.hpp"
 #include "dda/df/block_system.hpp"
 #include "dda/df/broad_phase.hpp"
@@ -306,6 +308,99 @@ TEST(EntranceEdge, VertexNearBothEndsOfAShortEdgeMakesOneContact) {
       {p, p + Vec2(0.5, 0.1), p + Vec2(0.6, 0.6), p + Vec2(0.1, 0.5)}};
   const auto found = find_contacts(blocks, {{0, 1}}, 0.01);
   expect_one_contact(found, 1, 0, 0, 2, 0.003 / std::sqrt(2.0));
+}
+
+TEST(EntranceEdge, ShortEdgeRepeatsAreDroppedOnTheParallelPathToo) {
+  // The chamfer case above 40 times over (pairs 3 m apart in x), on two
+  // threads with every loop parallel: each block drops the repeat of its own
+  // candidates, and the blocks' lists are closed up in parallel. Expected:
+  // the single-thread list, one contact per pair (diamond 2q + 1, vertex 0,
+  // against chamfer edge 2 of square 2q), sorted and without gaps.
+  const Vec2 p(0.999, 0.999);
+  std::vector<Polygon2> blocks;
+  std::vector<std::pair<int, int>> pairs;
+  for (int q = 0; q < 40; ++q) {
+    const Vec2 at(3.0 * q, 0);
+    blocks.push_back({at + Vec2(0, 0), at + Vec2(1, 0), at + Vec2(1, 0.995), at + Vec2(0.995, 1), at + Vec2(0, 1)});
+    blocks.push_back({at + p, at + p + Vec2(0.5, 0.1), at + p + Vec2(0.6, 0.6), at + p + Vec2(0.1, 0.5)});
+    pairs.emplace_back(2 * q, 2 * q + 1);
+  }
+  const auto serial = find_contacts(blocks, pairs, 0.01);
+  std::vector<ContactCandidate> parallel;
+  {
+    const testing::ForcedThreads threads(2);
+    parallel = find_contacts(blocks, pairs, 0.01);
+  }
+  ASSERT_EQ(serial.size(), 40u);
+  ASSERT_EQ(parallel.size(), serial.size());
+  for (int q = 0; q < 40; ++q) {
+    const ContactCandidate& c = parallel[static_cast<std::size_t>(q)];
+    EXPECT_EQ(std::tie(c.vblock, c.vertex, c.eblock, c.edge), std::make_tuple(2 * q + 1, 0, 2 * q, 2)) << q;
+    EXPECT_EQ(c.dn, serial[static_cast<std::size_t>(q)].dn) << q;
+  }
+}
+
+// The index of the last step's contacts: lookups by the full key and by
+// (vertex block, vertex, edge block) within the vertex block's own keys, on
+// contacts in any order, and the in-order key comparison that tells a model
+// whose contacts are those of the last step.
+struct Key {
+  int vblock, vertex, eblock, edge;
+};
+
+TEST(ContactIndex, FindsEveryKeyWithinItsVertexBlock) {
+  // Unsorted, with a repeated key (index 1 and 4: the later one is found)
+  // and a vertex against two edges of one block (by_vertex: the later one).
+  const std::vector<Key> contacts{{3, 1, 0, 2}, {0, 2, 1, 0}, {3, 1, 0, 1}, {0, 0, 5, 3}, {0, 2, 1, 0}, {7, 4, 3, 0}};
+  const ContactIndex index(contacts);
+  ASSERT_EQ(index.size(), 6u);
+  EXPECT_EQ(index.exact(3, 1, 0, 2), 0);
+  EXPECT_EQ(index.exact(3, 1, 0, 1), 2);
+  EXPECT_EQ(index.exact(0, 2, 1, 0), 4);
+  EXPECT_EQ(index.exact(0, 0, 5, 3), 3);
+  EXPECT_EQ(index.exact(7, 4, 3, 0), 5);
+  EXPECT_EQ(index.by_vertex(3, 1, 0), 2);
+  EXPECT_EQ(index.by_vertex(0, 2, 1), 4);
+  EXPECT_EQ(index.by_vertex(7, 4, 3), 5);
+  // Absent: another edge, vertex or block; blocks with no contact, below the
+  // first and beyond the last.
+  EXPECT_EQ(index.exact(3, 1, 0, 3), -1);
+  EXPECT_EQ(index.by_vertex(3, 2, 0), -1);
+  EXPECT_EQ(index.by_vertex(0, 2, 2), -1);
+  EXPECT_EQ(index.by_vertex(5, 0, 0), -1);
+  EXPECT_EQ(index.by_vertex(-1, 0, 0), -1);
+  EXPECT_EQ(index.exact(8, 0, 0, 0), -1);
+  const ContactIndex empty{std::vector<Key>{}};
+  EXPECT_EQ(empty.exact(0, 0, 0, 0), -1);
+  EXPECT_EQ(empty.by_vertex(0, 0, 0), -1);
+}
+
+TEST(ContactIndex, SameKeysInOrderOnlyForTheContactsAsTheyStand) {
+  auto candidate = [](int vb, int v, int eb, int e) {
+    ContactCandidate c;
+    c.vblock = vb;
+    c.vertex = v;
+    c.eblock = eb;
+    c.edge = e;
+    return c;
+  };
+  const std::vector<ContactCandidate> sorted{candidate(0, 1, 2, 0), candidate(1, 0, 0, 3), candidate(2, 2, 1, 1)};
+  EXPECT_TRUE(ContactIndex(sorted).same_keys_in_order(sorted));
+  auto fewer = sorted;
+  fewer.pop_back();
+  EXPECT_FALSE(ContactIndex(sorted).same_keys_in_order(fewer));
+  auto other_edge = sorted;
+  other_edge[1].edge = 2;
+  EXPECT_FALSE(ContactIndex(sorted).same_keys_in_order(other_edge));
+  // The same keys, but the contacts stand in another order: the candidates
+  // (sorted) are not the contacts in place.
+  const std::vector<ContactCandidate> shuffled{sorted[2], sorted[0], sorted[1]};
+  EXPECT_FALSE(ContactIndex(shuffled).same_keys_in_order(sorted));
+  {
+    const testing::ForcedThreads threads(2);  // the parallel comparison
+    EXPECT_TRUE(ContactIndex(sorted).same_keys_in_order(sorted));
+    EXPECT_FALSE(ContactIndex(sorted).same_keys_in_order(other_edge));
+  }
 }
 
 TEST(BroadPhase, SameAsBruteForce) {
