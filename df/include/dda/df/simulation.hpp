@@ -208,7 +208,7 @@ class Simulation {
   // while contact_index_current_ (restore() clears it).
   ContactIndex contact_index_;
   bool contact_index_current_ = false;
-  std::vector<char> keep_reference_;  // per contact of detect_contacts(): keeps its shear reference point
+  std::vector<char> keep_reference_;  // per contact of carry_over(): keeps its shear reference point
   std::vector<Vec2> fixed_anchor_, fixed_pos_;          // fixed points: target and current
   std::vector<Vec2> load_pos_, measurement_pos_;
   std::vector<StepRecord> log_;
