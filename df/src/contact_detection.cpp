@@ -90,14 +90,17 @@ void resolve_vertex_vertex(const std::vector<Polygon2>& blocks, int i, int v, in
   const ContactCandidate* best = nullptr;
   const double tie = 1e-3 * d0;
   for (const ContactCandidate& c : all) {
+    // Whether c may take the place of the best so far is asked before whether
+    // it is admissible and plausible (a point-in-polygon test): the answer is
+    // the same, and most candidates of a pair fall short of the best.
+    if (best && !(c.dn > best->dn - tie)) continue;
+    const bool better = !best || c.dn > best->dn + tie;
+    if (!better && !(previous && previous(c.vblock, c.vertex, c.eblock) &&
+                     !previous(best->vblock, best->vertex, best->eblock)))
+      continue;  // a near-tie goes to the contact the last step had
     if (!admissible(blocks[c.vblock], c.vertex, outward_normal(blocks[c.eblock], c.edge))) continue;
     if (!plausible(blocks, c, 1e-6 * d0)) continue;
-    if (!best || c.dn > best->dn + tie) {
-      best = &c;
-    } else if (c.dn > best->dn - tie && previous && previous(c.vblock, c.vertex, c.eblock) &&
-               !previous(best->vblock, best->vertex, best->eblock)) {
-      best = &c;  // near-tie: keep the contact the last step had
-    }
+    best = &c;
   }
   if (best && best->dn <= d0) out.push_back(*best);
 }
@@ -264,14 +267,18 @@ std::vector<ContactCandidate> find_contacts(const std::vector<Polygon2>& blocks,
         const Vec2 e = b - a;
         const double l2 = e.squaredNorm();
         if (l2 == 0) continue;
-        const double t = std::clamp((p - a).dot(e) / l2, 0.0, 1.0);
-        if ((a + t * e - p).squaredNorm() > d0 * d0) continue;  // no root for the many that are not near
+        // Near an end: a vertex-vertex contact. Asked first, since it needs no
+        // projection onto the edge and holds for two in three near entries of
+        // a layered model (corners meet corners); the vertex is then within
+        // d0 of the edge too.
         const double da2 = (p - a).squaredNorm(), db2 = (p - b).squaredNorm();
-        if (std::min(da2, db2) < d0 * d0) {  // near an end: a vertex-vertex contact
+        if (std::min(da2, db2) < d0 * d0) {
           const int w = da2 <= db2 ? k : next_index(nj, k);
           vertex_pairs.push_back(i < j ? std::array<int, 4>{i, v, j, w} : std::array<int, 4>{j, w, i, v});
           continue;
         }
+        const double t = std::clamp((p - a).dot(e) / l2, 0.0, 1.0);
+        if ((a + t * e - p).squaredNorm() > d0 * d0) continue;  // no root for the many that are not near
         if (!admissible(pi, v, outward_normal(pj, k))) continue;
         const ContactCandidate c = make(blocks, i, v, j, k, false);
         if (plausible(blocks, c, 1e-6 * d0)) out.push_back(c);
