@@ -112,6 +112,7 @@ void Simulation::detect_contacts() {
   // (its spring holds the shear offset since it locked); any other measures
   // shear from where P is now.
   const ScopedTimer timer(timings_.contact_geometry);
+  saved_states_.resize(contacts_.size());
 #pragma omp parallel for schedule(static) if (nb > parallel_grain())
   for (int k = 0; k < n; ++k) {
     Contact& c = contacts_[static_cast<std::size_t>(k)];
@@ -133,6 +134,10 @@ void Simulation::detect_contacts() {
       c.geo.gs = c.geo.gc;
     }
     c.length = tributary_length(bi.vertices, c.vertex, c.geo.tangent);
+    // What a step's attempt changes, saved while the contact is at hand: a
+    // pass of its own read every contact again (3 % of a step on a
+    // 50k-block model at rest).
+    saved_states_[static_cast<std::size_t>(k)] = iteration_state(c);
   }
 }
 
@@ -378,13 +383,6 @@ bool Simulation::open_close(double dt, std::vector<Contact>& contacts, Eigen::Ve
   return false;
 }
 
-void Simulation::save_iteration_states() {
-  saved_states_.resize(contacts_.size());
-  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(contacts_.size());
-#pragma omp parallel for schedule(static) if (model_.block_count() > parallel_grain())
-  for (std::ptrdiff_t k = 0; k < n; ++k) saved_states_[k] = iteration_state(contacts_[k]);
-}
-
 void Simulation::restore_iteration_states() {
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(contacts_.size());
 #pragma omp parallel for schedule(static) if (model_.block_count() > parallel_grain())
@@ -419,9 +417,8 @@ const StepRecord& Simulation::advance(double max_dt) {
     detect_contacts();
   }
   // Each attempt works on contacts_ in place; one thrown away (or one that
-  // throws) puts back what the iteration changed, so the next starts from
-  // the contacts of the start of the step.
-  save_iteration_states();
+  // throws) puts back what the iteration changed (saved by detect_contacts),
+  // so the next starts from the contacts of the start of the step.
   const Control& ctl = model_.control;
   const double dt_min = ctl.min_dt_ratio * ctl.dt;
   StepRecord rec;

@@ -134,6 +134,8 @@ class Simulation {
 
  private:
   const StepRecord& advance(double max_dt);
+  // The step's contacts with their geometry from the current positions;
+  // saves what an attempt changes of each (restore_iteration_states()).
   void detect_contacts();
   // detect_contacts() when the contacts differ from the last step's: a new
   // list, states carried over from the last step's contacts by key.
@@ -165,8 +167,8 @@ class Simulation {
   void record_measurements();
   ContactLaw law_of(const Contact& c) const;
   double max_vertex_displacement(const Eigen::VectorXd& d) const;
-  // contacts_' iteration states into saved_states_, and back.
-  void save_iteration_states();
+  // contacts_' iteration states back from saved_states_, where
+  // detect_contacts() put them.
   void restore_iteration_states();
   // Where an iterative solve of a step of length dt starts: every block
   // keeps its velocity and acceleration, d = v dt + a dt^2 / 2.
