@@ -22,10 +22,10 @@
 #include <limits>
 #include <vector>
 
-#include <Eigen/Cholesky>
 #include <Eigen/Core>
 
 #include "dda/df/block_system.hpp"  // parallel_grain
+#include "spd_inverse.hpp"
 
 namespace dda::df {
 
@@ -126,14 +126,11 @@ class BlockJacobiPcg {
       const Block d = Block(op.diagonal(i)).template selfadjointView<Eigen::Lower>();
       if (d == diagonal_[i]) continue;
       diagonal_[i] = d;
-      const Eigen::LLT<Block> llt(d);
-      if (llt.info() != Eigen::Success) {
+      if (!spd_inverse<N>(d, inverse_[i])) {
         ++bad;
         diagonal_[i].setConstant(std::numeric_limits<double>::quiet_NaN());  // never matches
         inverse_[i].setIdentity();
-        continue;
       }
-      inverse_[i] = llt.solve(Block::Identity());
     }
     return bad == 0;
   }
