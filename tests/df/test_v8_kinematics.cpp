@@ -4,7 +4,10 @@
 // acceleration, so the first three hold to rounding.
 #include <gtest/gtest.h>
 
+#include <array>
+
 #include "df_test_models.hpp"
+#include "dda/df/block_kinematics.hpp"
 #include "dda/df/simulation.hpp"
 
 namespace dda::df {
@@ -115,6 +118,36 @@ TEST(V8, ColumnOnFixedBaseCarriesMeanStress) {
   // |eps_yy| h / 2 = 2.5e-5 m, plus the penalty compliance: well under 0.1 mm.
   EXPECT_LE(sim.histories()[0].back().displacement.norm(), 1e-4);
   EXPECT_LE(sim.log().back().kinetic_energy, 1e-9);
+}
+
+}  // namespace
+}  // namespace dda::df
+
+namespace dda::df {
+namespace {
+
+// The 2D mass matrix, rho times the integral of T^T T over the block,
+// against quadrature: the polygon cut into triangles fanned from vertex 0
+// (signed areas, so a non-convex block works), each integrated with the
+// edge-midpoint rule, which is exact for the quadratic entries of T^T T.
+TEST(MassMatrix2D, EqualsQuadratureOfTTransposeT) {
+  const Polygon2 l_shape{{0, 0}, {3, 0}, {3, 1}, {1.2, 1}, {1.2, 2.5}, {0, 2.5}};  // non-convex
+  const double rho = 2300;
+  const BlockGeometry g = block_geometry(l_shape);
+  Matrix6d expected = Matrix6d::Zero();
+  for (std::size_t k = 1; k + 1 < l_shape.size(); ++k) {
+    const Vec2 &a = l_shape[0], &b = l_shape[k], &c = l_shape[k + 1];
+    const double area = 0.5 * cross(b - a, c - a);
+    const std::array<Vec2, 3> midpoints{0.5 * (a + b), 0.5 * (b + c), 0.5 * (c + a)};
+    for (const Vec2& m : midpoints) {
+      const Matrix26d t = t_matrix(g.centroid, m);
+      expected += rho * area / 3 * t.transpose() * t;
+    }
+  }
+  const Matrix6d m = mass_matrix(g, rho);
+  EXPECT_LE((m - expected).cwiseAbs().maxCoeff(), 1e-12 * expected.cwiseAbs().maxCoeff()) << m << "\n\n" << expected;
+  EXPECT_EQ(m, m.transpose());
+  EXPECT_NEAR(m(0, 0), rho * (3 * 1 + 1.2 * 1.5), 1e-9);  // rho times the area
 }
 
 }  // namespace
