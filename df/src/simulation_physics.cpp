@@ -26,8 +26,9 @@ void contact_terms(const std::vector<Contact>& contacts, std::vector<std::array<
   for (std::ptrdiff_t k = 0; k < n; ++k) terms[k] = term(contacts[k]);
 }
 
-double strain_energy(const BlockState& b, const Matrix3d& emat) {
-  return 0.5 * b.geometry.area * b.stress.dot(emat.ldlt().solve(b.stress));
+// compliance: the inverse of the elasticity matrix.
+double strain_energy(const BlockState& b, const Matrix3d& compliance) {
+  return 0.5 * b.geometry.area * b.stress.dot(compliance * b.stress);
 }
 
 // The body acceleration of a step [t, t + dt]: its mean over the step (so a
@@ -209,7 +210,7 @@ void Simulation::store_energy(EnergyRecord& e) const {
     const BlockState& b = blocks_[i];
     const int mat = model_.block_material[i];
     twice_kinetic[i] = b.velocity.dot(mass_matrix(b.geometry, model_.materials[mat].density) * b.velocity);
-    strain[i] = strain_energy(b, emat_[mat]);
+    strain[i] = strain_energy(b, compliance_[mat]);
   }
   for (int i = 0; i < nb; ++i) {
     e.kinetic += 0.5 * twice_kinetic[i];

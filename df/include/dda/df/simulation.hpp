@@ -193,6 +193,7 @@ class Simulation {
   std::unique_ptr<LinearSolver> solver_;
   std::vector<std::unique_ptr<FrictionLaw>> friction_;  // one per joint
   std::vector<Matrix3d> emat_;                          // one per material
+  std::vector<Matrix3d> compliance_;                    // emat_^-1: strain energy density is s' C s / 2
   std::vector<BlockState> blocks_;
   std::vector<Contact> contacts_;                       // of the last accepted step
   // Scratch, not state (dead between steps): the list detect_contacts()
