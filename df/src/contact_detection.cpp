@@ -285,7 +285,23 @@ std::vector<ContactCandidate> find_contacts(const std::vector<Polygon2>& blocks,
       }
       std::sort(vertex_pairs.begin(), vertex_pairs.end());
       vertex_pairs.erase(std::unique(vertex_pairs.begin(), vertex_pairs.end()), vertex_pairs.end());
-      for (const auto& vp : vertex_pairs) resolve_vertex_vertex(blocks, vp[0], vp[1], vp[2], vp[3], d0, previous, out);
+      // A vertex near both ends of a short edge (one shorter than d0) pairs
+      // with both, and both pairs can resolve to that edge: one contact, not
+      // two (two would put its springs in twice). Such repeats come from the
+      // vertex pairs of one pair of blocks, so they are dropped here, among
+      // the few contacts this pair's vertex pairs made.
+      const std::size_t first = out.size();
+      for (const auto& vp : vertex_pairs) {
+        resolve_vertex_vertex(blocks, vp[0], vp[1], vp[2], vp[3], d0, previous, out);
+        if (out.size() < first + 2) continue;
+        const ContactCandidate& c = out.back();
+        for (std::size_t m = first; m + 1 < out.size(); ++m)
+          if (out[m].vblock == c.vblock && out[m].vertex == c.vertex && out[m].eblock == c.eblock &&
+              out[m].edge == c.edge) {
+            out.pop_back();
+            break;
+          }
+      }
     }
     found[static_cast<std::size_t>(omp_get_thread_num())] = std::move(out);
   }
@@ -329,14 +345,11 @@ std::vector<ContactCandidate> find_contacts(const std::vector<Polygon2>& blocks,
       for (const ContactCandidate& c : found[static_cast<std::size_t>(t)]) out[static_cast<std::size_t>(at[c.vblock]++)] = c;
     }
   }
-  // A key comes twice when a vertex lies near both ends of a short edge (an
-  // edge shorter than the search distance): the vertex-vertex pairs with its
-  // two ends can both resolve to that edge. One contact, not two: two would
-  // put the same springs in twice (a few contacts a step on a 10k-block
-  // layered model). Repeats lie next to each other within a block's
-  // candidates, so each block drops its own in parallel, and the blocks'
-  // lists are then closed up, in parallel too: a serial pass over all
-  // candidates (300k of them on a 50k-block model) was a tenth of the search.
+  // Keys are unique: a plain vertex-edge contact has its vertex away from
+  // the edge's ends, so no vertex pair makes its key, and the repeats among
+  // the vertex pairs' contacts were dropped above. Should one come through
+  // all the same, each block drops its own below while its candidates are
+  // sorted, and only then are the blocks' lists closed up (in parallel).
   std::vector<int> kept(static_cast<std::size_t>(nblocks) + 1, 0);  // candidates block b keeps, at b + 1
 #pragma omp parallel for schedule(static) if (nblocks > parallel_grain())
   for (int b = 0; b < nblocks; ++b) {
