@@ -1,7 +1,6 @@
 // Time stepping: contact detection, open-close iteration, step control.
 #include "dda/df/simulation.hpp"
 
-#include <Eigen/Cholesky>
 #include <Eigen/LU>  // Matrix3d::inverse
 #include <algorithm>
 #include <cstdint>

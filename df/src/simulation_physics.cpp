@@ -1,6 +1,5 @@
 // Physics extensions of the time stepper: bolts and the energy ledger
 // (members of Simulation kept out of simulation.cpp, which is shared).
-#include <Eigen/Cholesky>
 #include <array>
 #include <cmath>
 #include <cstddef>
