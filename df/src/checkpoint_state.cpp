@@ -1,5 +1,6 @@
 // Simulation::state() and Simulation::restore(): the evolving state of a run,
 // copied out for a checkpoint and put back to resume (see SimulationState).
+#include <limits>
 #include <string>
 
 #include "dda/common/error.hpp"
@@ -61,6 +62,7 @@ void Simulation::restore(const SimulationState& s) {
   dt_ = s.dt;
   step_count_ = s.step_count;
   blocks_ = s.blocks;
+  moved_since_detection_ = std::numeric_limits<double>::infinity();  // the near list checks the vertices
   contacts_ = s.contacts;
   contact_index_current_ = false;
   fixed_anchor_ = s.fixed_anchor;

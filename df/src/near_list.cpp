@@ -4,33 +4,44 @@
 #include "dda/df/block_system.hpp"
 #include "dda/df/broad_phase.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
 namespace dda::df {
 
-bool NearList::still_valid(const std::vector<Polygon2>& blocks, double search_distance) const {
-  if (search_distance != search_distance_ || blocks.size() != anchor_.size()) return false;
+double NearList::drift(const std::vector<Polygon2>& blocks, double search_distance) const {
+  constexpr double kInvalid = std::numeric_limits<double>::infinity();
+  if (search_distance != search_distance_ || blocks.size() != anchor_.size()) return kInvalid;
   const double half_skin = 0.5 * skin_factor_ * search_distance;
-  const double limit = half_skin * half_skin;
   const int n = static_cast<int>(blocks.size());
-  int moved = 0;  // blocks with a vertex past half the skin, or another vertex count
-#pragma omp parallel for schedule(static) reduction(+ : moved) if (n > parallel_grain())
+  double worst = 0;  // squared; a changed vertex count counts as infinite
+#pragma omp parallel for schedule(static) reduction(max : worst) if (n > parallel_grain())
   for (int b = 0; b < n; ++b) {
     const Polygon2& now = blocks[b];
     const Polygon2& then = anchor_[b];
     if (now.size() != then.size()) {
-      ++moved;
+      worst = kInvalid;
       continue;
     }
-    for (std::size_t v = 0; v < now.size(); ++v)
-      if ((now[v] - then[v]).squaredNorm() > limit) {
-        ++moved;
-        break;
-      }
+    for (std::size_t v = 0; v < now.size(); ++v) worst = std::max(worst, (now[v] - then[v]).squaredNorm());
   }
-  return moved == 0;
+  return worst > half_skin * half_skin ? kInvalid : std::sqrt(worst);
 }
 
-const NearPairs& NearList::update(const std::vector<Polygon2>& blocks, double search_distance) {
-  if (still_valid(blocks, search_distance)) return near_;
+const NearPairs& NearList::update(const std::vector<Polygon2>& blocks, double search_distance, double moved) {
+  // The bounds add up (a vertex's distance from where it was is at most the
+  // sum of its moves); kept a percent short of half the skin, so rounding
+  // in the bounds cannot matter, and past that the vertices decide.
+  const double half_skin = 0.5 * skin_factor_ * search_distance;
+  if (search_distance == search_distance_ && blocks.size() == anchor_.size() && drift_bound_ + moved < 0.99 * half_skin) {
+    drift_bound_ += moved;
+    return near_;
+  }
+  drift_bound_ = drift(blocks, search_distance);
+  ++checks_;
+  if (drift_bound_ <= half_skin) return near_;
+  drift_bound_ = 0;
   const double reach = (1 + skin_factor_) * search_distance;
   const int n = static_cast<int>(blocks.size());
   std::vector<Box2> boxes(blocks.size());

@@ -92,7 +92,9 @@ void Simulation::detect_contacts() {
   if (!contact_index_current_ || contact_index_.size() != contacts_.size()) contact_index_ = ContactIndex(contacts_);
   const ContactIndex& last = contact_index_;
   auto previous = [&last](int vb, int v, int eb) { return last.by_vertex(vb, v, eb) >= 0; };
-  const auto candidates = find_contacts(polygons_, near_list_.update(polygons_, d0), d0, previous);
+  const auto candidates =
+      find_contacts(polygons_, near_list_.update(polygons_, d0, moved_since_detection_), d0, previous);
+  moved_since_detection_ = 0;
   timings_.near_searches = near_list_.searches();
 
   // Once a model rests on its contacts, they are those of the last step, key
@@ -485,7 +487,8 @@ void Simulation::accept(double dt, const Eigen::VectorXd& d, std::vector<Contact
   // thread count.
   const int nb = model_.block_count();
   std::vector<double> twice_kinetic(nb), twice_strain_density(nb);  // v1' M v1, sigma' E^-1 sigma
-#pragma omp parallel for schedule(static) if (nb > parallel_grain())
+  double moved_most = 0;  // squared: the farthest a vertex moves, for the near list (detect_contacts)
+#pragma omp parallel for schedule(static) reduction(max : moved_most) if (nb > parallel_grain())
   for (int i = 0; i < nb; ++i) {
     BlockState& b = blocks_[i];
     const Vector6d di = d.segment<kDofs>(kDofs * i);
@@ -493,13 +496,18 @@ void Simulation::accept(double dt, const Eigen::VectorXd& d, std::vector<Contact
     const Vector6d v1 = 2.0 / dt * di - b.velocity;  // end velocity, constant acceleration
     b.acceleration = (v1 - b.velocity) / dt;
     twice_kinetic[i] = v1.dot(mass_matrix(b.geometry, model_.materials[mat].density) * v1);
-    for (Vec2& v : b.vertices) v = move_point(b.geometry.centroid, di, v);
+    for (Vec2& v : b.vertices) {
+      const Vec2 next = move_point(b.geometry.centroid, di, v);
+      moved_most = std::max(moved_most, (next - v).squaredNorm());
+      v = next;
+    }
     b.geometry = block_geometry(b.vertices);
     b.stress = rotate_stress(b.stress, di[2]) + emat_[mat] * di.tail<3>();
     twice_strain_density[i] = b.stress.dot(compliance_[mat] * b.stress);
     b.velocity = model_.control.dynamic * v1;
     b.velocity_end = v1;
   }
+  moved_since_detection_ += std::sqrt(moved_most);
   double kinetic = 0, elastic = 0;
   for (int i = 0; i < nb; ++i) {
     kinetic += 0.5 * twice_kinetic[i];

@@ -4,6 +4,8 @@
 // than half the skin (near_list.hpp gives the argument).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <limits>
 #include <random>
 #include <tuple>
 
@@ -50,26 +52,72 @@ TEST(NearList, ContactsFromKeptPairsEqualAFreshSearchEveryStep) {
   }
   std::uniform_real_distribution<double> shift(-0.1 * d0, 0.1 * d0), turn(-0.1 * d0, 0.1 * d0);
   NearList near_list;
+  NearList bounded;  // told how far the vertices moved: must give the same pairs
+  double moved = std::numeric_limits<double>::infinity();
   int compared = 0;
   for (int step = 0; step < 120; ++step) {
     const auto kept = find_contacts(blocks, near_list.update(blocks, d0), d0);
+    const auto kept_bounded = find_contacts(blocks, bounded.update(blocks, d0, moved), d0);
     const auto fresh = fresh_search(blocks, d0);
     ASSERT_FALSE(fresh.empty());
     expect_same(kept, fresh, step);
+    expect_same(kept_bounded, fresh, step);
     compared += static_cast<int>(fresh.size());
+    moved = 0;
     for (Polygon2& b : blocks) {
       Vec2 c = Vec2::Zero();
       for (const Vec2& p : b) c += p;
       c /= static_cast<double>(b.size());
       const Vec2 move(shift(rng), shift(rng));
       const double angle = turn(rng);  // rad about the centre: up to 0.1 d0 at 1 m
-      for (Vec2& p : b) p = c + move + test::rotated(Vec2(p - c), angle);
+      for (Vec2& p : b) {
+        const Vec2 next = c + move + test::rotated(Vec2(p - c), angle);
+        moved = std::max(moved, (next - p).norm());
+        p = next;
+      }
     }
   }
   // Both reuse and fresh searches happened, or the test proves nothing.
   EXPECT_GT(near_list.searches(), 1);
   EXPECT_LT(near_list.searches(), 60);  // 19 with this seed
   EXPECT_GT(compared, 120 * 100);  // 118 to 141 contacts a step
+  // With the bounds: the same searches, and fewer reads of every vertex
+  // (the unbounded list reads them on every update).
+  EXPECT_EQ(bounded.searches(), near_list.searches());
+  EXPECT_EQ(near_list.checks(), 120);
+  EXPECT_LT(bounded.checks(), near_list.checks());
+  EXPECT_GT(bounded.checks(), bounded.searches());  // some checks found the pairs still holding
+}
+
+// The bounds are trusted only while their sum stays under 0.99 of half the
+// skin (0.495 d0 here); past that the vertices decide. A block moved 0.1 d0
+// away and back, with bounds summing to 0.6 d0: then every vertex is read,
+// found where it was, and the pairs are kept without a search. A move the
+// bounds understate (2.5 d0 told as 0.3 d0) is caught once their sum passes
+// the limit. (The caller promises true bounds; this only shows that the
+// vertices, not the sum, decide once it is past the limit.)
+TEST(NearList, BoundsAddUpAndTheVerticesDecideBeyondThem) {
+  const double d0 = 0.01;
+  std::vector<Polygon2> blocks{rectangle(0, 0, 1, 1), rectangle(0, 1 + 3 * d0, 1, 1)};
+  NearList near_list;
+  EXPECT_TRUE(find_contacts(blocks, near_list.update(blocks, d0), d0).empty());
+  EXPECT_EQ(near_list.checks(), 1);
+  for (Vec2& p : blocks[1]) p.y() += 0.1 * d0;
+  near_list.update(blocks, d0, 0.1 * d0);  // within the bound: nothing read
+  EXPECT_EQ(near_list.checks(), 1);
+  for (Vec2& p : blocks[1]) p.y() -= 0.1 * d0;
+  near_list.update(blocks, d0, 0.1 * d0);
+  EXPECT_EQ(near_list.checks(), 1);
+  near_list.update(blocks, d0, 0.4 * d0);  // summed 0.6 d0: read, and nothing moved
+  EXPECT_EQ(near_list.checks(), 2);
+  EXPECT_EQ(near_list.searches(), 1);
+  // The check found a drift of 0, so the bounds start again from there.
+  for (Vec2& p : blocks[1]) p.y() -= 2.5 * d0;  // now 0.5 d0 apart: a contact
+  near_list.update(blocks, d0, 0.3 * d0);       // understated: 0.3 d0 summed, trusted
+  EXPECT_EQ(near_list.searches(), 1);
+  const auto found = find_contacts(blocks, near_list.update(blocks, d0, 0.3 * d0), d0);  // 0.6 d0: read
+  EXPECT_EQ(near_list.searches(), 2);
+  EXPECT_EQ(found.size(), 2u);
 }
 
 // Two blocks 3 d0 apart: no contact. One moves 2.5 d0 towards the other in

@@ -13,6 +13,7 @@
 // acceleration within the step). A step whose solution is not finite, or
 // moves a block beyond the model even at the smallest dt, throws
 // RunawayError (runaway.hpp).
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -211,6 +212,11 @@ class Simulation {
   // while contact_index_current_ (restore() clears it).
   ContactIndex contact_index_;
   bool contact_index_current_ = false;
+  // How far a vertex may have moved since the last detection: the largest
+  // move of each accepted step, added up (accept()); unknown (infinite)
+  // until a first detection and after restore(). Lets the near list skip
+  // reading every vertex while the model is at rest.
+  double moved_since_detection_ = std::numeric_limits<double>::infinity();
   std::vector<char> keep_reference_;  // per contact of carry_over(): keeps its shear reference point
   std::vector<Vec2> fixed_anchor_, fixed_pos_;          // fixed points: target and current
   std::vector<Vec2> load_pos_, measurement_pos_;
