@@ -74,6 +74,7 @@ void Simulation::settle() {
     const double moved = max_vertex_displacement(d);
     if (!std::isfinite(moved) || moved > max_step_displacement_) break;
     StepRecord rec;
+    rec.max_displacement = moved;  // accept() hands it to the near list's bound
     accept(dts, d, work, rec);
     ++settle_iterations_;
     time_ = 0;

@@ -487,8 +487,7 @@ void Simulation::accept(double dt, const Eigen::VectorXd& d, std::vector<Contact
   // thread count.
   const int nb = model_.block_count();
   std::vector<double> twice_kinetic(nb), twice_strain_density(nb);  // v1' M v1, sigma' E^-1 sigma
-  double moved_most = 0;  // squared: the farthest a vertex moves, for the near list (detect_contacts)
-#pragma omp parallel for schedule(static) reduction(max : moved_most) if (nb > parallel_grain())
+#pragma omp parallel for schedule(static) if (nb > parallel_grain())
   for (int i = 0; i < nb; ++i) {
     BlockState& b = blocks_[i];
     const Vector6d di = d.segment<kDofs>(kDofs * i);
@@ -496,18 +495,16 @@ void Simulation::accept(double dt, const Eigen::VectorXd& d, std::vector<Contact
     const Vector6d v1 = 2.0 / dt * di - b.velocity;  // end velocity, constant acceleration
     b.acceleration = (v1 - b.velocity) / dt;
     twice_kinetic[i] = v1.dot(mass_matrix(b.geometry, model_.materials[mat].density) * v1);
-    for (Vec2& v : b.vertices) {
-      const Vec2 next = move_point(b.geometry.centroid, di, v);
-      moved_most = std::max(moved_most, (next - v).squaredNorm());
-      v = next;
-    }
+    for (Vec2& v : b.vertices) v = move_point(b.geometry.centroid, di, v);
     b.geometry = block_geometry(b.vertices);
     b.stress = rotate_stress(b.stress, di[2]) + emat_[mat] * di.tail<3>();
     twice_strain_density[i] = b.stress.dot(compliance_[mat] * b.stress);
     b.velocity = model_.control.dynamic * v1;
     b.velocity_end = v1;
   }
-  moved_since_detection_ += std::sqrt(moved_most);
+  // The farthest a vertex moved (max_vertex_displacement(d), which the
+  // caller measured to accept the step), for the near list's bound.
+  moved_since_detection_ += rec.max_displacement;
   double kinetic = 0, elastic = 0;
   for (int i = 0; i < nb; ++i) {
     kinetic += 0.5 * twice_kinetic[i];

@@ -164,6 +164,8 @@ class Simulation {
   // solve is made at full accuracy rather than as a trial that would have
   // to be repeated. Read from the log, so a resumed run decides the same.
   bool quiet_step() const;
+  // Moves the blocks by d and fills rec; rec.max_displacement comes set by
+  // the caller (max_vertex_displacement(d), measured to accept the step).
   void accept(double dt, const Eigen::VectorXd& d, std::vector<Contact>& contacts, StepRecord& rec);
   void record_measurements();
   ContactLaw law_of(const Contact& c) const;
