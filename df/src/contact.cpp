@@ -217,6 +217,15 @@ ContactState update_contact(Contact& c, const ContactLaw& law, double dt, const 
   return ContactState::Sliding;
 }
 
+AssembledSprings assembled_springs(const Contact& c) { return {c.state, c.geo.ds0, c.geo.gs}; }
+
+Contact as_assembled(Contact c, const AssembledSprings& s) {
+  c.state = s.state;
+  c.geo.ds0 = s.ds0;
+  c.geo.gs = s.gs;
+  return c;
+}
+
 ContactIterationState iteration_state(const Contact& c) {
   ContactIterationState s;
   s.state = c.state;

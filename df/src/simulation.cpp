@@ -255,36 +255,37 @@ void Simulation::assemble(double dt, const std::vector<Contact>& contacts, std::
   });
 }
 
-void Simulation::reassemble(double dt, const std::vector<Contact>& contacts,
-                            const std::vector<std::pair<int, Contact>>& before, const std::vector<int>& in_before,
-                            const std::vector<std::uint8_t>& revisit, std::vector<double>& friction) {
+void Simulation::reassemble(double dt, const std::vector<Contact>& contacts, const StateChanges& changes,
+                            std::vector<double>& friction) {
   // F is updated, not formed again: between iterates only the contacts that
   // changed state and the friction of the sliding ones differ (a quarter of
   // the contacts or less; forming F afresh spent as long again on the
   // others). A contact that changed state takes its old forces out and puts
   // its new ones in. The updates go through the same rounds as the
   // assembly, so F does not depend on the thread count; `revisit` flags those
-  // contacts, so that the others (most of them) are not even read.
+  // contacts, so that the others (most of them) are not even read. A contact
+  // that changed state is rebuilt as it was assembled (from its springs
+  // kept by the update) where it is needed, here in parallel.
   auto update = [&](int k) {
     const Contact& c = contacts[k];
     const ContactLaw law = law_of(c);
     const double f = friction_force(c, law, dt);
-    if (in_before[k] >= 0) {
-      add_contact_forces(before[in_before[k]].second, law, friction[k], -1.0, system_);
+    if (changes.is_changed[k]) {
+      add_contact_forces(as_assembled(c, changes.assembled[k]), law, friction[k], -1.0, system_);
       add_contact_forces(c, law, f, 1.0, system_);
     } else if (f != friction[k]) {
       add_friction_change(c, f - friction[k], system_);
     }
     friction[k] = f;
   };
-  system_.scatter(update, &revisit);
+  system_.scatter(update, &changes.revisit);
   // K: only the springs of the contacts that changed state differ (from a
   // few thousand of tens of thousands in the first iterates to none once
   // only friction is settling); they are swapped serially, in order, so K
   // does not depend on the thread count.
-  for (const auto& [k, old] : before) {
+  for (const int k : changes.changed) {
     const ContactLaw law = law_of(contacts[k]);
-    add_contact_springs(old, law, -1.0, system_);
+    add_contact_springs(as_assembled(contacts[k], changes.assembled[k]), law, -1.0, system_);
     add_contact_springs(contacts[k], law, 1.0, system_);
   }
 }
@@ -308,17 +309,13 @@ bool Simulation::open_close(double dt, std::vector<Contact>& contacts, Eigen::Ve
   // assembled: the next assembly swaps their springs and forces only. A
   // state change alters them through the state, ds0 and gs alone
   // (update_contact), and the friction, which `friction` keeps as assembled.
-  std::vector<std::pair<int, Contact>> before;
-  std::vector<int> in_before(contacts.size(), -1);  // position in `before`, -1 if not there
+  // Every flag is written by the first update, before the first reassembly.
+  StateChanges& sc = state_changes_;
+  sc.changed.clear();
+  sc.is_changed.resize(contacts.size());
+  sc.assembled.resize(contacts.size());
+  sc.revisit.resize(contacts.size());
   std::vector<double> friction;
-  struct Springs {
-    ContactState state;
-    double ds0;
-    Vector6d gs;
-  };
-  std::vector<Springs> assembled(contacts.size());
-  std::vector<std::uint8_t> moved(contacts.size(), 0);
-  std::vector<std::uint8_t> revisit(contacts.size(), 0);  // changed state or sliding: reassemble's contacts
   // Trial solves (linear_solver.hpp) while the states change; an iterate
   // that settles on a trial solve is solved again at full accuracy and
   // checked once more, and the last iterate allowed is always a full solve.
@@ -331,10 +328,10 @@ bool Simulation::open_close(double dt, std::vector<Contact>& contacts, Eigen::Ve
       // Swapping a spring costs twice adding it, and runs serially: when many
       // contacts changed (the first iterate after a blast of new contacts)
       // the whole system is assembled afresh instead.
-      if (iterations == 1 || 8 * before.size() > contacts.size()) {
+      if (iterations == 1 || 8 * sc.changed.size() > contacts.size()) {
         assemble(dt, contacts, friction);
       } else {
-        reassemble(dt, contacts, before, in_before, revisit, friction);
+        reassemble(dt, contacts, sc, friction);
       }
     }
     {
@@ -351,28 +348,23 @@ bool Simulation::open_close(double dt, std::vector<Contact>& contacts, Eigen::Ve
       Contact& c = contacts[k];
       const ContactState old = c.state;
       const int old_sign = c.slip_sign;
-      const Springs springs{old, c.geo.ds0, c.geo.gs};
+      const AssembledSprings springs = assembled_springs(c);
       c.state = update_contact(c, law_of(c), dt, d.segment<kDofs>(kDofs * c.vblock),
                                d.segment<kDofs>(kDofs * c.eblock), changes[k] >= 2);
       const bool flipped = c.state != old || (c.state == ContactState::Sliding && c.slip_sign != old_sign);
       if (flipped && changes[k] < 255) ++changes[k];
       changed = changed || flipped;
       friction_lags = friction_lags || !c.friction_settled;
-      moved[k] = c.state != old;
-      revisit[k] = moved[k] || c.state == ContactState::Sliding;
-      if (moved[k]) assembled[k] = springs;
+      const bool moved = c.state != old;
+      sc.is_changed[k] = moved;
+      sc.revisit[k] = moved || c.state == ContactState::Sliding;
+      if (moved) sc.assembled[k] = springs;
     }
-    for (const auto& b : before) in_before[b.first] = -1;
-    before.clear();
-    for (std::size_t k = 0; k < contacts.size(); ++k) {
-      if (!moved[k]) continue;
-      Contact old = contacts[k];
-      old.state = assembled[k].state;
-      old.geo.ds0 = assembled[k].ds0;
-      old.geo.gs = assembled[k].gs;
-      in_before[k] = static_cast<int>(before.size());
-      before.emplace_back(static_cast<int>(k), std::move(old));
-    }
+    // Indices only: copying each changed contact here (432 bytes, thousands
+    // in the first iterates) was a serial pass of its own.
+    sc.changed.clear();
+    for (std::size_t k = 0; k < contacts.size(); ++k)
+      if (sc.is_changed[k]) sc.changed.push_back(static_cast<int>(k));
     // Settled: no contact changed state and the friction of every sliding
     // contact agrees with its normal force. The friction agreement is a
     // fixed-point iteration that converges linearly (thousands of sliding

@@ -127,6 +127,19 @@ void add_friction_change(const Contact& c, double change, BlockSystem& sys);
 ContactState update_contact(Contact& c, const ContactLaw& law, double dt, const Vector6d& di,
                             const Vector6d& dj, bool hold = false);
 
+// What a contact's springs and forces depend on besides its geometry and its
+// friction: its state and the reference of its shear spring. The open-close
+// iteration keeps them as assembled for a contact whose state changes, so
+// that the next iterate can take the old springs and forces out of K and F.
+struct AssembledSprings {
+  ContactState state = ContactState::Open;
+  double ds0 = 0;
+  Vector6d gs = Vector6d::Zero();
+};
+AssembledSprings assembled_springs(const Contact& c);
+// c as it was assembled with `s`.
+Contact as_assembled(Contact c, const AssembledSprings& s);
+
 // What the open-close iteration changes in a contact: its state and what
 // update_contact writes. A step's attempt works on the contacts in place;
 // an attempt thrown away (its step cut) puts these back, which is a quarter

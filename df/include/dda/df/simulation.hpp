@@ -145,14 +145,18 @@ class Simulation {
   // The step's system afresh; friction[k] gets the friction force of
   // contact k as assembled (friction_force).
   void assemble(double dt, const std::vector<Contact>& contacts, std::vector<double>& friction);
-  // The system of the next open-close iterate from the last one: `before`
-  // holds the contacts whose state changed since, as they were assembled
-  // (index, contact), and in_before[k] is contact k's position in it (-1
-  // for the others); revisit[k] flags the contacts in `before` and the
-  // sliding ones, the only ones whose forces can differ; `friction` is as
+  // What the last update of the open-close iteration changed, for the
+  // next iterate's assembly. Kept between steps only to keep its memory.
+  struct StateChanges {
+    std::vector<int> changed;                 // contacts whose state changed, in increasing order
+    std::vector<std::uint8_t> is_changed;     // per contact: in `changed`
+    std::vector<AssembledSprings> assembled;  // per contact in `changed`: its springs as assembled
+    std::vector<std::uint8_t> revisit;        // per contact: changed, or sliding (its forces can differ)
+  };
+  // The system of the next open-close iterate from the last one: only the
+  // contacts `changes` flags to revisit are read; `friction` is as
   // assemble() leaves it, and is kept up to date.
-  void reassemble(double dt, const std::vector<Contact>& contacts, const std::vector<std::pair<int, Contact>>& before,
-                  const std::vector<int>& in_before, const std::vector<std::uint8_t>& revisit,
+  void reassemble(double dt, const std::vector<Contact>& contacts, const StateChanges& changes,
                   std::vector<double>& friction);
   // The open-close iteration of one attempt; true when the states settled.
   // With trial_first false the first solve is a full one (see quiet_step).
@@ -203,6 +207,7 @@ class Simulation {
   // builds before swapping it into contacts_. Kept so that a list of tens of
   // MB is neither allocated nor faulted in again every step.
   std::vector<Contact> work_;
+  StateChanges state_changes_;
   // What the step's iteration changes in each contact, as it was at the
   // start of the step: an attempt thrown away puts it back.
   std::vector<ContactIterationState> saved_states_;
