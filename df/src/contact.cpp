@@ -33,7 +33,8 @@ ContactGeometry contact_geometry(const Polygon2& vi, const Vec2& ci, const Polyg
   const Vec2 grad_p(e.y(), -e.x());
   const Vec2 grad_a(p.y() - b.y(), b.x() - p.x());
   const Vec2 grad_b(a.y() - p.y(), p.x() - a.x());
-  g.en = t_transpose_times(ci, p, grad_p) / g.length;
+  g.normal_l = grad_p;
+  g.arm_p = p - ci;
   g.gn = (t_transpose_times(cj, a, grad_a) + t_transpose_times(cj, b, grad_b)) / g.length;
 
   // Shear: offset of P along the (fixed) tangent from the reference point
@@ -42,9 +43,8 @@ ContactGeometry contact_geometry(const Polygon2& vi, const Vec2& ci, const Polyg
   g.ratio0 = (p - a).dot(e) / (g.length * g.length);
   const Vec2 p0 = a + ref_ratio * e;
   g.ds0 = (p - p0).dot(g.tangent);
-  g.es = t_transpose_times(ci, p, g.tangent);
-  g.gs = -t_transpose_times(cj, p0, g.tangent);
-  g.gc = -t_transpose_times(cj, a + g.ratio0 * e, g.tangent);
+  g.arm_ref = p0 - cj;
+  g.arm_proj = Vec2(a + g.ratio0 * e) - cj;
   return g;
 }
 
@@ -98,8 +98,8 @@ FrictionInput friction_input(const Contact& c, double dt) {
 void add_contact_springs(const Contact& c, const ContactLaw& law, double weight, BlockSystem& sys) {
   if (c.state == ContactState::Open) return;
   const ContactGeometry& g = c.geo;
-  add_spring_matrix(sys, c.vblock, c.eblock, weight * law.pn, g.en, g.gn);
-  if (c.state == ContactState::Locked) add_spring_matrix(sys, c.vblock, c.eblock, weight * law.ps, g.es, g.gs);
+  add_spring_matrix(sys, c.vblock, c.eblock, weight * law.pn, g.en(), g.gn);
+  if (c.state == ContactState::Locked) add_spring_matrix(sys, c.vblock, c.eblock, weight * law.ps, g.es(), g.gs());
 }
 
 double friction_force(const Contact& c, const ContactLaw& law, double dt) {
@@ -110,9 +110,9 @@ double friction_force(const Contact& c, const ContactLaw& law, double dt) {
 void add_contact_forces(const Contact& c, const ContactLaw& law, double friction, double weight, BlockSystem& sys) {
   if (c.state == ContactState::Open) return;
   const ContactGeometry& g = c.geo;
-  add_spring_force(sys, c.vblock, c.eblock, weight * law.pn, g.dn0, g.en, g.gn);
+  add_spring_force(sys, c.vblock, c.eblock, weight * law.pn, g.dn0, g.en(), g.gn);
   if (c.state == ContactState::Locked) {
-    add_spring_force(sys, c.vblock, c.eblock, weight * law.ps, g.ds0, g.es, g.gs);
+    add_spring_force(sys, c.vblock, c.eblock, weight * law.ps, g.ds0, g.es(), g.gs());
   } else {
     // Sliding: friction from the normal force of the previous iterate, on P
     // against its slip and the reverse on the edge under P.
@@ -121,8 +121,8 @@ void add_contact_forces(const Contact& c, const ContactLaw& law, double friction
 }
 
 void add_friction_change(const Contact& c, double change, BlockSystem& sys) {
-  sys.rhs(c.vblock) -= change * c.geo.es;  // es = T_i(P)^T t
-  sys.rhs(c.eblock) -= change * c.geo.gc;  // gc = -T_j(Pc)^T t
+  sys.rhs(c.vblock) -= change * c.geo.es();  // es = T_i(P)^T t
+  sys.rhs(c.eblock) -= change * c.geo.gc();  // gc = -T_j(Pc)^T t
 }
 
 void add_contact_forces(const Contact& c, const ContactLaw& law, double dt, BlockSystem& sys) {
@@ -137,7 +137,7 @@ void add_contact_terms(const Contact& c, const ContactLaw& law, double dt, Block
 ContactState update_contact(Contact& c, const ContactLaw& law, double dt, const Vector6d& di, const Vector6d& dj,
                             bool hold) {
   ContactGeometry& g = c.geo;
-  const double dn = g.dn0 + g.en.dot(di) + g.gn.dot(dj);
+  const double dn = g.dn0 + g.en().dot(di) + g.gn.dot(dj);
   const ContactState old = c.state;
   const double friction_used =
       old == ContactState::Sliding ? law.friction->strength(friction_input(c, dt), c.friction) : 0.0;
@@ -146,7 +146,7 @@ ContactState update_contact(Contact& c, const ContactLaw& law, double dt, const 
     if (old == ContactState::Open) {  // a fresh contact: the shear spring starts unloaded at P
       c.ref_ratio = g.ratio0;
       g.ds0 = 0;
-      g.gs = g.gc;
+      g.reference_at_projection();
     } else if (old == ContactState::Sliding) {
       // A sliding contact that sticks keeps the friction force it carried:
       // the spring starts stretched by F / ps (elastic-plastic shear spring),
@@ -156,7 +156,7 @@ ContactState update_contact(Contact& c, const ContactLaw& law, double dt, const 
       // E = 1 GPa, dt = 0.2 ms overshot by 12 %).
       g.ds0 = c.slip_sign * friction_used / law.ps;
       c.ref_ratio = g.ratio0 - g.ds0 / g.length;
-      g.gs = g.gc;  // the reference moved by F/ps, far below the step's size
+      g.reference_at_projection();  // the reference moved by F/ps, far below the step's size
     }
     return ContactState::Locked;
   };
@@ -166,7 +166,7 @@ ContactState update_contact(Contact& c, const ContactLaw& law, double dt, const 
 
   if (c.glued) {  // never opens, never slides: both springs stay on
     c.normal_force = -law.pn * dn;
-    c.shear_force = -law.ps * (g.ds0 + g.es.dot(di) + g.gs.dot(dj));
+    c.shear_force = -law.ps * (g.ds0 + g.es().dot(di) + g.gs().dot(dj));
     if (old != ContactState::Locked) lock();
     return ContactState::Locked;
   }
@@ -191,11 +191,12 @@ ContactState update_contact(Contact& c, const ContactLaw& law, double dt, const 
     return ContactState::Open;
   }
   c.normal_force = n;
-  const double slip = g.es.dot(di) + g.gc.dot(dj);  // P relative to the edge point under it
+  const Vector6d es = g.es();
+  const double slip = es.dot(di) + g.gc().dot(dj);  // P relative to the edge point under it
   c.slip_velocity = std::abs(slip) / dt;
 
   if (old == ContactState::Locked) {
-    const double ds = g.ds0 + g.es.dot(di) + g.gs.dot(dj);
+    const double ds = g.ds0 + es.dot(di) + g.gs().dot(dj);
     const double fs = -law.ps * ds;
     if (std::abs(fs) > law.friction->strength(friction_input(c, dt), c.friction) + law.ps * eps) {
       c.broke = c.bonded;
@@ -217,12 +218,12 @@ ContactState update_contact(Contact& c, const ContactLaw& law, double dt, const 
   return ContactState::Sliding;
 }
 
-AssembledSprings assembled_springs(const Contact& c) { return {c.state, c.geo.ds0, c.geo.gs}; }
+AssembledSprings assembled_springs(const Contact& c) { return {c.state, c.geo.ds0, c.geo.arm_ref}; }
 
 Contact as_assembled(Contact c, const AssembledSprings& s) {
   c.state = s.state;
   c.geo.ds0 = s.ds0;
-  c.geo.gs = s.gs;
+  c.geo.arm_ref = s.arm_ref;
   return c;
 }
 
@@ -238,7 +239,7 @@ ContactIterationState iteration_state(const Contact& c) {
   s.shear_force = c.shear_force;
   s.slip_velocity = c.slip_velocity;
   s.ds0 = c.geo.ds0;
-  s.gs = c.geo.gs;
+  s.arm_ref = c.geo.arm_ref;
   return s;
 }
 
@@ -253,7 +254,7 @@ void restore_iteration_state(Contact& c, const ContactIterationState& s) {
   c.shear_force = s.shear_force;
   c.slip_velocity = s.slip_velocity;
   c.geo.ds0 = s.ds0;
-  c.geo.gs = s.gs;
+  c.geo.arm_ref = s.arm_ref;
 }
 
 }  // namespace dda::df

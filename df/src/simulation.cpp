@@ -100,7 +100,7 @@ void Simulation::detect_contacts() {
   // Once a model rests on its contacts, they are those of the last step, key
   // for key: then they stay where they are, and the pass below resets the
   // fields that live within one step, exactly what carry_over() makes of a
-  // contact found again. Copying every contact into a new list (432 bytes
+  // contact found again. Copying every contact into a new list (then 432 bytes
   // each, 58k of them on a 10k-block model) was a third of the contact
   // search, and a pass of its own for the reset cost a read and a write of
   // every contact's first cache lines (300k contacts on a 50k-block model).
@@ -138,7 +138,7 @@ void Simulation::detect_contacts() {
     if (!keep_reference) {
       c.ref_ratio = c.geo.ratio0;
       c.geo.ds0 = 0;
-      c.geo.gs = c.geo.gc;
+      c.geo.reference_at_projection();
     }
     c.length = tributary_length(bi.vertices, c.vertex, c.geo.tangent);
     // What a step's attempt changes, saved while the contact is at hand: a
@@ -360,7 +360,7 @@ bool Simulation::open_close(double dt, std::vector<Contact>& contacts, Eigen::Ve
       sc.revisit[k] = moved || c.state == ContactState::Sliding;
       if (moved) sc.assembled[k] = springs;
     }
-    // Indices only: copying each changed contact here (432 bytes, thousands
+    // Indices only: copying each changed contact here (then 432 bytes, thousands
     // in the first iterates) was a serial pass of its own.
     sc.changed.clear();
     for (std::size_t k = 0; k < contacts.size(); ++k)

@@ -23,17 +23,35 @@ enum class ContactState { Open, Sliding, Locked };
 const char* to_string(ContactState s);
 
 // Geometry of a contact in the configuration at the start of the step.
+//
+// Four of its five gradients are T^T f of a block at a point (f = the
+// normal times l, or the tangent): they are kept as the point's arm from
+// the block's centroid, two numbers instead of six, and formed when asked
+// for, by the same arithmetic that formed them once (so the same numbers).
+// A contact is then 304 bytes instead of 432: the pass that forms every
+// contact's geometry each step writes that much less (a fifth of its time
+// on a 50k-block model at rest), and a model's contacts take 30 % less
+// memory. (The open-close update, which reads them all, was no faster:
+// it is not limited by those bytes.)
 struct ContactGeometry {
   double length = 0;             // edge length l, m
   Vec2 tangent{1, 0};            // unit A -> B
   double dn0 = 0;                // signed normal distance, m
-  Vector6d en = Vector6d::Zero();  // d(dn)/d(d_i)
   Vector6d gn = Vector6d::Zero();  // d(dn)/d(d_j)
   double ratio0 = 0;             // projection of P1 on the edge, A = 0, B = 1
   double ds0 = 0;                // tangential offset of P1 from the reference point, m
-  Vector6d es = Vector6d::Zero();  // d(ds)/d(d_i)
-  Vector6d gs = Vector6d::Zero();  // d(ds)/d(d_j)
-  Vector6d gc = Vector6d::Zero();  // -T_j(Pc)^T t: edge motion at the projection Pc
+  Vec2 normal_l{0, 0};           // l times the unit normal at P1: (B - A) turned clockwise
+  Vec2 arm_p{0, 0};              // P1 - centroid of block i
+  Vec2 arm_ref{0, 0};            // P0 - centroid of block j (the shear reference)
+  Vec2 arm_proj{0, 0};           // Pc - centroid of block j (the projection of P1)
+
+  Vector6d en() const { return t_transpose_times_arm(arm_p, normal_l) / length; }  // d(dn)/d(d_i)
+  Vector6d es() const { return t_transpose_times_arm(arm_p, tangent); }            // d(ds)/d(d_i)
+  Vector6d gs() const { return -t_transpose_times_arm(arm_ref, tangent); }         // d(ds)/d(d_j)
+  // -T_j(Pc)^T t: the edge's motion at the projection Pc, along t.
+  Vector6d gc() const { return -t_transpose_times_arm(arm_proj, tangent); }
+  // The shear reference moved to the projection of P1 (gs becomes gc).
+  void reference_at_projection() { arm_ref = arm_proj; }
 };
 
 struct Contact {
@@ -134,7 +152,7 @@ ContactState update_contact(Contact& c, const ContactLaw& law, double dt, const 
 struct AssembledSprings {
   ContactState state = ContactState::Open;
   double ds0 = 0;
-  Vector6d gs = Vector6d::Zero();
+  Vec2 arm_ref{0, 0};  // ContactGeometry::arm_ref, which gives gs
 };
 AssembledSprings assembled_springs(const Contact& c);
 // c as it was assembled with `s`.
@@ -151,7 +169,7 @@ struct ContactIterationState {
   bool friction_settled = true, bonded = false, broke = false;
   double ref_ratio = 0, normal_force = 0, shear_force = 0, slip_velocity = 0;
   double ds0 = 0;
-  Vector6d gs = Vector6d::Zero();
+  Vec2 arm_ref{0, 0};  // ContactGeometry::arm_ref, which gives gs
 };
 ContactIterationState iteration_state(const Contact& c);
 void restore_iteration_state(Contact& c, const ContactIterationState& s);
