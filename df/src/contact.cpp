@@ -33,7 +33,7 @@ ContactGeometry contact_geometry(const Polygon2& vi, const Vec2& ci, const Polyg
   const Vec2 grad_p(e.y(), -e.x());
   const Vec2 grad_a(p.y() - b.y(), b.x() - p.x());
   const Vec2 grad_b(a.y() - p.y(), p.x() - a.x());
-  g.normal_l = grad_p;
+  g.en = t_transpose_times(ci, p, grad_p) / g.length;
   g.arm_p = p - ci;
   g.gn = (t_transpose_times(cj, a, grad_a) + t_transpose_times(cj, b, grad_b)) / g.length;
 
@@ -98,7 +98,7 @@ FrictionInput friction_input(const Contact& c, double dt) {
 void add_contact_springs(const Contact& c, const ContactLaw& law, double weight, BlockSystem& sys) {
   if (c.state == ContactState::Open) return;
   const ContactGeometry& g = c.geo;
-  add_spring_matrix(sys, c.vblock, c.eblock, weight * law.pn, g.en(), g.gn);
+  add_spring_matrix(sys, c.vblock, c.eblock, weight * law.pn, g.en, g.gn);
   if (c.state == ContactState::Locked) add_spring_matrix(sys, c.vblock, c.eblock, weight * law.ps, g.es(), g.gs());
 }
 
@@ -110,7 +110,7 @@ double friction_force(const Contact& c, const ContactLaw& law, double dt) {
 void add_contact_forces(const Contact& c, const ContactLaw& law, double friction, double weight, BlockSystem& sys) {
   if (c.state == ContactState::Open) return;
   const ContactGeometry& g = c.geo;
-  add_spring_force(sys, c.vblock, c.eblock, weight * law.pn, g.dn0, g.en(), g.gn);
+  add_spring_force(sys, c.vblock, c.eblock, weight * law.pn, g.dn0, g.en, g.gn);
   if (c.state == ContactState::Locked) {
     add_spring_force(sys, c.vblock, c.eblock, weight * law.ps, g.ds0, g.es(), g.gs());
   } else {
@@ -137,7 +137,7 @@ void add_contact_terms(const Contact& c, const ContactLaw& law, double dt, Block
 ContactState update_contact(Contact& c, const ContactLaw& law, double dt, const Vector6d& di, const Vector6d& dj,
                             bool hold) {
   ContactGeometry& g = c.geo;
-  const double dn = g.dn0 + g.en().dot(di) + g.gn.dot(dj);
+  const double dn = g.dn0 + g.en.dot(di) + g.gn.dot(dj);
   const ContactState old = c.state;
   const double friction_used =
       old == ContactState::Sliding ? law.friction->strength(friction_input(c, dt), c.friction) : 0.0;

@@ -62,7 +62,7 @@ TEST(ContactGeometry, LinearisedDistanceMatchesMovedGeometry) {
     const Vec2 p = top[v] + t_matrix(ct, top[v]) * di;
     const Vec2 a = base[2] + t_matrix(cb, base[2]) * dj, b = base[3] + t_matrix(cb, base[3]) * dj;
     const double exact = signed_distance(p, a, b);
-    const double linear = g.dn0 + g.en().dot(di) + g.gn.dot(dj);
+    const double linear = g.dn0 + g.en.dot(di) + g.gn.dot(dj);
     EXPECT_NEAR(linear, exact, 1e-6) << "vertex " << v;  // |d|^2 ~ 1e-7
     EXPECT_GT(std::abs(linear - g.dn0), 1e-5);  // the increments do change dn
     EXPECT_NEAR(g.dn0, 0.0005, 1e-15);
@@ -70,12 +70,12 @@ TEST(ContactGeometry, LinearisedDistanceMatchesMovedGeometry) {
 }
 
 TEST(ContactGeometry, GradientsAreTTransposeAtTheirPoints) {
-  // The geometry keeps four of its gradients as arms from a centroid. Each
-  // must be T^T f of the right block at the right point, by the definitions
+  // The geometry keeps three of its gradients as arms from a centroid. Each
+  // must be T^T t of the right block at the right point, by the definitions
   // in contact.hpp, here formed from t_matrix (not from the arms): es at the
   // vertex P of block i; gc at P's projection Pc on the edge of block j; gs
   // at the shear reference P0 = A + ref_ratio (B - A) on block j, and at Pc
-  // once the reference is moved there; en = T_i(P)^T n.
+  // once the reference is moved there. And en = T_i(P)^T n.
   const Polygon2 base = rectangle(-1, -1, 3, 1);
   const Polygon2 top = rectangle(0.2, 0.0005, 1, 0.5);
   const Vec2 cb = block_geometry(base).centroid, ct = block_geometry(top).centroid;
@@ -91,7 +91,7 @@ TEST(ContactGeometry, GradientsAreTTransposeAtTheirPoints) {
     EXPECT_LT((g.es() - tt(ct, p, t)).norm(), 1e-14) << v;
     EXPECT_LT((g.gc() + tt(cb, pc, t)).norm(), 1e-14) << v;
     EXPECT_LT((g.gs() + tt(cb, p0, t)).norm(), 1e-14) << v;
-    EXPECT_LT((g.en() - tt(ct, p, n)).norm(), 1e-14) << v;
+    EXPECT_LT((g.en - tt(ct, p, n)).norm(), 1e-14) << v;
     EXPECT_GT((g.gs() - g.gc()).norm(), 0.05) << v;  // P0 and Pc lie 0.1 m or more apart here
     g.reference_at_projection();
     EXPECT_EQ(g.gs(), g.gc()) << v;
@@ -227,7 +227,7 @@ TEST(ContactIterationState, RestoringUndoesEveryUpdate) {
            a.bonded == b.bonded && a.broke == b.broke && a.glued == b.glued &&
            a.friction.theta == b.friction.theta && a.friction.slip == b.friction.slip &&
            a.friction.extra == b.friction.extra && g.length == h.length && g.tangent == h.tangent &&
-           g.dn0 == h.dn0 && g.en() == h.en() && g.gn == h.gn && g.ratio0 == h.ratio0 && g.ds0 == h.ds0 &&
+           g.dn0 == h.dn0 && g.en == h.en && g.gn == h.gn && g.ratio0 == h.ratio0 && g.ds0 == h.ds0 &&
            g.es() == h.es() && g.gs() == h.gs() && g.gc() == h.gc();
   };
   JointProperties joint;

@@ -24,30 +24,30 @@ const char* to_string(ContactState s);
 
 // Geometry of a contact in the configuration at the start of the step.
 //
-// Four of its five gradients are T^T f of a block at a point (f = the
-// normal times l, or the tangent): they are kept as the point's arm from
-// the block's centroid, two numbers instead of six, and formed when asked
-// for, by the same arithmetic that formed them once (so the same numbers).
-// A contact is then 304 bytes instead of 432: the pass that forms every
-// contact's geometry each step writes that much less (a fifth of its time
-// on a 50k-block model at rest), and a model's contacts take 30 % less
-// memory. (The open-close update, which reads them all, was no faster:
-// it is not limited by those bytes.)
+// Three of its five gradients are T^T t of a block at a point: they are
+// kept as the point's arm from the block's centroid, two numbers instead of
+// six, and formed when asked for, by the same arithmetic that formed them
+// once (so the same numbers). A contact is then 336 bytes instead of 432:
+// the pass that forms every contact's geometry each step writes that much
+// less (a fifth of its time on a 50k-block model at rest), and a model's
+// contacts take a fifth less memory. en is kept whole: formed from its arm
+// it would cost six divisions by l each time it is asked for. (The
+// open-close update, which reads every contact each iterate, ran as fast
+// with 432-, 336- or 304-byte contacts: it is not limited by their bytes.)
 struct ContactGeometry {
   double length = 0;             // edge length l, m
   Vec2 tangent{1, 0};            // unit A -> B
   double dn0 = 0;                // signed normal distance, m
+  Vector6d en = Vector6d::Zero();  // d(dn)/d(d_i)
   Vector6d gn = Vector6d::Zero();  // d(dn)/d(d_j)
   double ratio0 = 0;             // projection of P1 on the edge, A = 0, B = 1
   double ds0 = 0;                // tangential offset of P1 from the reference point, m
-  Vec2 normal_l{0, 0};           // l times the unit normal at P1: (B - A) turned clockwise
   Vec2 arm_p{0, 0};              // P1 - centroid of block i
   Vec2 arm_ref{0, 0};            // P0 - centroid of block j (the shear reference)
   Vec2 arm_proj{0, 0};           // Pc - centroid of block j (the projection of P1)
 
-  Vector6d en() const { return t_transpose_times_arm(arm_p, normal_l) / length; }  // d(dn)/d(d_i)
-  Vector6d es() const { return t_transpose_times_arm(arm_p, tangent); }            // d(ds)/d(d_i)
-  Vector6d gs() const { return -t_transpose_times_arm(arm_ref, tangent); }         // d(ds)/d(d_j)
+  Vector6d es() const { return t_transpose_times_arm(arm_p, tangent); }     // d(ds)/d(d_i)
+  Vector6d gs() const { return -t_transpose_times_arm(arm_ref, tangent); }  // d(ds)/d(d_j)
   // -T_j(Pc)^T t: the edge's motion at the projection Pc, along t.
   Vector6d gc() const { return -t_transpose_times_arm(arm_proj, tangent); }
   // The shear reference moved to the projection of P1 (gs becomes gc).
