@@ -12,8 +12,10 @@
 // Counters: blocks, contacts, ms_per_step, steps_per_s, the share of the
 // step spent in contact search (finding the contacts, carrying their states
 // over) / contact geometry (each contact's linearised geometry, the start of
-// forming its springs) / assembly / linear solve (the rest is the open-close
-// state updates, the step bookkeeping and the block updates), near_searches
+// forming its springs) / assembly / linear solve / the contacts' state updates
+// after each solve (update_pct) / ending an accepted step: blocks moved,
+// stresses, energies (accept_pct); the rest is the step's bookkeeping),
+// near_searches
 // (steps whose near pairs were searched afresh, see near_list.hpp),
 // solves per step, PCG iterations per PCG solve, CHOLMOD analyses per step,
 // threads.
@@ -150,6 +152,8 @@ void time_steps(benchmark::State& state, Simulation& sim) {
   state.counters["geometry_pct"] = 100 * geometry / total;
   state.counters["assembly_pct"] = 100 * (t1.assembly - t0.assembly) / total;
   state.counters["solve_pct"] = 100 * (t1.solve - t0.solve) / total;
+  state.counters["update_pct"] = 100 * (t1.contact_update - t0.contact_update) / total;
+  state.counters["accept_pct"] = 100 * (t1.accept - t0.accept) / total;
   state.counters["near_searches"] = static_cast<double>(t1.near_searches - t0.near_searches);
   state.counters["solves_per_step"] = static_cast<double>(t1.solves - t0.solves) / n;
   const long pcg = s1.pcg_solves - s0.pcg_solves;

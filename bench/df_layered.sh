@@ -8,7 +8,8 @@
 # `dda dc`, and times STEPS steps of each from rest with bench_df (the
 # gravity transient, the hardest part of the run: 10-15 solves a step).
 # Prints blocks, contacts, solves and ms per step, the shares of contact
-# search, contact geometry, assembly and solve, the mean step (dt_us,
+# search, contact geometry, assembly, solve, the contacts' state updates
+# after each solve and the end of the accepted step, the mean step (dt_us,
 # microseconds of model time: the step control sets it, and a shorter step
 # costs less), and the growth exponent of the cost per step between sizes.
 #
@@ -35,7 +36,7 @@ build="${BUILD:-build}"
 [ -x "$build/bench/bench_df" ] && [ -x "$build/bin/dda" ] || bash scripts/build.sh
 work="${TMPDIR:-/tmp}/dda_bench_layered"
 rm -rf "$work" && mkdir -p "$work"
-printf '%-7s %8s %9s %7s %12s %11s %13s %13s %10s %7s\n' size blocks contacts solves ms_per_step search_pct geometry_pct assembly_pct solve_pct dt_us
+printf '%-7s %8s %9s %7s %12s %11s %13s %13s %10s %11s %11s %7s\n' size blocks contacts solves ms_per_step search_pct geometry_pct assembly_pct solve_pct update_pct accept_pct dt_us
 prev_n="" prev_ms=""
 # width x height (m) of the section for about 1k, 10k and 50k blocks (the
 # 60 x 40 m example has 2221 blocks: 0.93 per square metre).
@@ -57,11 +58,12 @@ import json, sys
 text = open(sys.argv[1]).read()
 b = json.loads(text[text.index("{"):])["benchmarks"][0]
 print(int(b["blocks"]), int(b["contacts"]), round(b["solves_per_step"], 1), round(b["ms_per_step"], 1),
-      round(b["search_pct"], 1), round(b["geometry_pct"], 1), round(b["assembly_pct"], 1), round(b["solve_pct"], 1), round(b["dt_us"], 1))
+      round(b["search_pct"], 1), round(b["geometry_pct"], 1), round(b["assembly_pct"], 1), round(b["solve_pct"], 1),
+      round(b["update_pct"], 1), round(b["accept_pct"], 1), round(b["dt_us"], 1))
 PY
 )
-  read -r n c s ms sp gp as so dtu <<<"$line"
-  printf '%-7s %8s %9s %7s %12s %11s %13s %13s %10s %7s\n' "$name" "$n" "$c" "$s" "$ms" "$sp" "$gp" "$as" "$so" "$dtu"
+  read -r n c s ms sp gp as so up ap dtu <<<"$line"
+  printf '%-7s %8s %9s %7s %12s %11s %13s %13s %10s %11s %11s %7s\n' "$name" "$n" "$c" "$s" "$ms" "$sp" "$gp" "$as" "$so" "$up" "$ap" "$dtu"
   if [ -n "$prev_n" ]; then
     /usr/bin/python3 -c "import math; print('        cost per step grows as N^%.2f from %s to %s blocks' % (math.log($ms / $prev_ms) / math.log($n / $prev_n), $prev_n, $n))"
   fi
@@ -71,7 +73,7 @@ done
 [ -n "$rest" ] || exit 0
 echo
 echo "after ${rest} s of model time (the transient over):"
-printf '%-7s %8s %12s %7s %12s %11s %13s %13s %10s %7s\n' size blocks wall_s_to_rest solves ms_per_step search_pct geometry_pct assembly_pct solve_pct dt_us
+printf '%-7s %8s %12s %7s %12s %11s %13s %13s %10s %11s %11s %7s\n' size blocks wall_s_to_rest solves ms_per_step search_pct geometry_pct assembly_pct solve_pct update_pct accept_pct dt_us
 for name in ${REST_SIZES:-41x27 130x85 290x190}; do
   sed -e "s/^  total_time: .*/  total_time: $rest/" "$work/$name.yaml" > "$work/$name.rest.yaml"
   start=$(date +%s.%N)
@@ -85,9 +87,10 @@ import json, sys
 text = open(sys.argv[1]).read()
 b = json.loads(text[text.index("{"):])["benchmarks"][0]
 print(int(b["blocks"]), round(b["solves_per_step"], 1), round(b["ms_per_step"], 1),
-      round(b["search_pct"], 1), round(b["geometry_pct"], 1), round(b["assembly_pct"], 1), round(b["solve_pct"], 1), round(b["dt_us"], 1))
+      round(b["search_pct"], 1), round(b["geometry_pct"], 1), round(b["assembly_pct"], 1), round(b["solve_pct"], 1),
+      round(b["update_pct"], 1), round(b["accept_pct"], 1), round(b["dt_us"], 1))
 PY
 )
-  read -r n s ms sp gp as so dtu <<<"$line"
-  printf '%-7s %8s %12s %7s %12s %11s %13s %13s %10s %7s\n' "$name" "$n" "$wall" "$s" "$ms" "$sp" "$gp" "$as" "$so" "$dtu"
+  read -r n s ms sp gp as so up ap dtu <<<"$line"
+  printf '%-7s %8s %12s %7s %12s %11s %13s %13s %10s %11s %11s %7s\n' "$name" "$n" "$wall" "$s" "$ms" "$sp" "$gp" "$as" "$so" "$up" "$ap" "$dtu"
 done

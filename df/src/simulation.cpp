@@ -342,29 +342,32 @@ bool Simulation::open_close(double dt, std::vector<Contact>& contacts, Eigen::Ve
     }
     const bool was_trial = solver_->last_was_trial();
     bool changed = false, friction_lags = false;
-    // Each contact updates only itself: in parallel (|| is order-free).
+    {
+      const ScopedTimer timer(timings_.contact_update);
+      // Each contact updates only itself: in parallel (|| is order-free).
 #pragma omp parallel for schedule(static) reduction(|| : changed, friction_lags) if (model_.block_count() > parallel_grain())
-    for (std::size_t k = 0; k < contacts.size(); ++k) {
-      Contact& c = contacts[k];
-      const ContactState old = c.state;
-      const int old_sign = c.slip_sign;
-      const AssembledSprings springs = assembled_springs(c);
-      c.state = update_contact(c, law_of(c), dt, d.segment<kDofs>(kDofs * c.vblock),
-                               d.segment<kDofs>(kDofs * c.eblock), changes[k] >= 2);
-      const bool flipped = c.state != old || (c.state == ContactState::Sliding && c.slip_sign != old_sign);
-      if (flipped && changes[k] < 255) ++changes[k];
-      changed = changed || flipped;
-      friction_lags = friction_lags || !c.friction_settled;
-      const bool moved = c.state != old;
-      sc.is_changed[k] = moved;
-      sc.revisit[k] = moved || c.state == ContactState::Sliding;
-      if (moved) sc.assembled[k] = springs;
+      for (std::size_t k = 0; k < contacts.size(); ++k) {
+        Contact& c = contacts[k];
+        const ContactState old = c.state;
+        const int old_sign = c.slip_sign;
+        const AssembledSprings springs = assembled_springs(c);
+        c.state = update_contact(c, law_of(c), dt, d.segment<kDofs>(kDofs * c.vblock),
+                                 d.segment<kDofs>(kDofs * c.eblock), changes[k] >= 2);
+        const bool flipped = c.state != old || (c.state == ContactState::Sliding && c.slip_sign != old_sign);
+        if (flipped && changes[k] < 255) ++changes[k];
+        changed = changed || flipped;
+        friction_lags = friction_lags || !c.friction_settled;
+        const bool moved = c.state != old;
+        sc.is_changed[k] = moved;
+        sc.revisit[k] = moved || c.state == ContactState::Sliding;
+        if (moved) sc.assembled[k] = springs;
+      }
+      // Indices only: copying each changed contact here (then 432 bytes, thousands
+      // in the first iterates) was a serial pass of its own.
+      sc.changed.clear();
+      for (std::size_t k = 0; k < contacts.size(); ++k)
+        if (sc.is_changed[k]) sc.changed.push_back(static_cast<int>(k));
     }
-    // Indices only: copying each changed contact here (then 432 bytes, thousands
-    // in the first iterates) was a serial pass of its own.
-    sc.changed.clear();
-    for (std::size_t k = 0; k < contacts.size(); ++k)
-      if (sc.is_changed[k]) sc.changed.push_back(static_cast<int>(k));
     // Settled: no contact changed state and the friction of every sliding
     // contact agrees with its normal force. The friction agreement is a
     // fixed-point iteration that converges linearly (thousands of sliding
@@ -455,7 +458,10 @@ const StepRecord& Simulation::advance(double max_dt) {
     rec.open_close_iterations = iterations;
     rec.converged = settled;
     rec.max_displacement = moved;
-    accept(dt, d, contacts_, rec);
+    {
+      const ScopedTimer timer(timings_.accept);
+      accept(dt, d, contacts_, rec);
+    }
     // Easy steps let dt grow back gradually toward the user's dt.
     if (!shortened && rec.dt_cuts == 0) dt_ = std::min(ctl.dt, dt_ * 1.1);
     break;

@@ -10,6 +10,8 @@ struct StepTimings {
   double contact_geometry = 0;  // s: of it, each contact's linearised geometry from the new positions
   double assembly = 0;        // s: K and F, every open-close iteration
   double solve = 0;           // s: the linear solves
+  double contact_update = 0;  // s: the contacts' state updates from each solve (open-close)
+  double accept = 0;          // s: ending an accepted step (blocks moved, stresses, energies, friction states)
   double total = 0;           // s: whole steps, attempts thrown away included
   long solves = 0;            // linear solves done
   long near_searches = 0;     // fresh searches for near pairs (the rest reused them)
