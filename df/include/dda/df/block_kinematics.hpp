@@ -29,7 +29,7 @@ Matrix26d t_matrix(const Vec2& centroid, const Vec2& p);
 // T^T f: the block's generalised force of a force f at p, or the gradient
 // of f . u(p) with respect to the block's unknowns; the _arm form takes
 // p - centroid. Written out (inline), as contact geometry needs five of them
-// per contact per step (and the open-close iterates form four of them from
+// per contact per step (and the open-close iterates form three of them from
 // the arms a contact keeps): forming T first made contact_geometry 5.6 % of
 // a 10k-block step at rest, not 3.4 %.
 inline Vector6d t_transpose_times_arm(const Vec2& arm, const Vec2& f) {
