@@ -29,7 +29,7 @@ const char* to_string(ContactState s);
 // six, and formed when asked for, by the same arithmetic that formed them
 // once (so the same numbers). A contact is then 336 bytes instead of 432:
 // the pass that forms every contact's geometry each step writes that much
-// less (a fifth of its time on a 50k-block model at rest), and a model's
+// less (a quarter of its time on a 50k-block model at rest), and a model's
 // contacts take a fifth less memory. en is kept whole: formed from its arm
 // it would cost six divisions by l each time it is asked for. (The
 // open-close update, which reads every contact each iterate, ran as fast
