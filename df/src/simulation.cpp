@@ -471,7 +471,33 @@ const StepRecord& Simulation::advance(double max_dt) {
 }
 
 void Simulation::accept(double dt, const Eigen::VectorXd& d, std::vector<Contact>& contacts, StepRecord& rec) {
-  before_accept(dt, d, contacts);
+  // One pass over the contacts (each only its own, in parallel; the counts
+  // are order-free): the energy ledger's terms of each, then its friction
+  // state advanced. The ledger reads the terms (before_accept, after_accept),
+  // and sums them serially in contact order. Three passes over every
+  // contact (the friction loss, the friction states, the spring energies)
+  // read the contacts' memory three times a step.
+  int open = 0, sliding = 0, locked = 0;
+  contact_energy_.resize(contacts.size());
+#pragma omp parallel for schedule(static) reduction(+ : open, sliding, locked) if (model_.block_count() > parallel_grain())
+  for (std::size_t k = 0; k < contacts.size(); ++k) {
+    Contact& c = contacts[k];
+    contact_energy_[k] = contact_energy(c, d.segment<kDofs>(kDofs * c.vblock), d.segment<kDofs>(kDofs * c.eblock));
+    const FrictionLaw& law = *friction_[c.joint];
+    law.advance({c.normal_force, c.slip_velocity, c.length, dt, c.bonded,
+                 c.state == ContactState::Sliding ? c.slip_sign : 0},
+                c.friction);
+    if (c.state == ContactState::Sliding) c.friction.slip += c.slip_velocity * dt;
+    switch (c.state) {
+      case ContactState::Open: ++open; break;
+      case ContactState::Sliding: ++sliding; break;
+      case ContactState::Locked: ++locked; break;
+    }
+  }
+  rec.open += open;
+  rec.sliding += sliding;
+  rec.locked += locked;
+  before_accept(dt, d);
   // Points ride with their blocks; move them before the centroids change.
   auto move = [&](int block, Vec2& p) {
     p = move_point(blocks_[block].geometry.centroid, d.segment<kDofs>(kDofs * block), p);
@@ -509,26 +535,6 @@ void Simulation::accept(double dt, const Eigen::VectorXd& d, std::vector<Contact
     elastic += 0.5 * blocks_[i].geometry.area * twice_strain_density[i];
   }
 
-  // Each contact advances only its own friction state: in parallel (the
-  // counts are order-free).
-  int open = 0, sliding = 0, locked = 0;
-#pragma omp parallel for schedule(static) reduction(+ : open, sliding, locked) if (nb > parallel_grain())
-  for (std::size_t k = 0; k < contacts.size(); ++k) {
-    Contact& c = contacts[k];
-    const FrictionLaw& law = *friction_[c.joint];
-    law.advance({c.normal_force, c.slip_velocity, c.length, dt, c.bonded,
-                 c.state == ContactState::Sliding ? c.slip_sign : 0},
-                c.friction);
-    if (c.state == ContactState::Sliding) c.friction.slip += c.slip_velocity * dt;
-    switch (c.state) {
-      case ContactState::Open: ++open; break;
-      case ContactState::Sliding: ++sliding; break;
-      case ContactState::Locked: ++locked; break;
-    }
-  }
-  rec.open += open;
-  rec.sliding += sliding;
-  rec.locked += locked;
   // A swap, not a move: the caller's vector keeps the old list's memory
   // (settle's working copy; a step works on contacts_ itself).
   if (&contacts != &contacts_) contacts_.swap(contacts);

@@ -1,6 +1,5 @@
 // Physics extensions of the time stepper: bolts and the energy ledger
 // (members of Simulation kept out of simulation.cpp, which is shared).
-#include <array>
 #include <cmath>
 #include <cstddef>
 #include <vector>
@@ -10,20 +9,6 @@
 
 namespace dda::df {
 namespace {
-
-// Per-contact terms of the energy ledger, evaluated in parallel (each reads
-// only its own contact) into `terms`, one row per contact; the caller sums
-// them serially in contact order, so the ledger does not depend on the
-// thread count. A serial loop over 58k contacts of (then) 432 bytes each cost
-// about half a millisecond per sum on the 10k layered model.
-template <int Columns, class Term>
-void contact_terms(const std::vector<Contact>& contacts, std::vector<std::array<double, Columns>>& terms, bool parallel,
-                   Term&& term) {
-  terms.resize(contacts.size());
-  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(contacts.size());
-#pragma omp parallel for schedule(static) if (parallel)
-  for (std::ptrdiff_t k = 0; k < n; ++k) terms[k] = term(contacts[k]);
-}
 
 // compliance: the inverse of the elasticity matrix.
 double strain_energy(const BlockState& b, const Matrix3d& compliance) {
@@ -83,7 +68,11 @@ void Simulation::init_physics() {
   // Stored energy of the starting state; the work sums start at zero.
   EnergyRecord e;
   e.time = time_;
-  store_energy(e);
+  std::vector<ContactEnergy> terms(contacts_.size());
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(contacts_.size());
+#pragma omp parallel for schedule(static) if (model_.block_count() > parallel_grain())
+  for (std::ptrdiff_t k = 0; k < n; ++k) terms[k] = contact_energy(contacts_[k], Vector6d::Zero(), Vector6d::Zero());
+  store_energy(e, terms);
   energy_start_ = e;
   energy_log_.assign(1, e);
 }
@@ -110,7 +99,20 @@ void Simulation::assemble_physics(double dt) {
   }
 }
 
-void Simulation::before_accept(double dt, const Eigen::VectorXd& d, const std::vector<Contact>& contacts) {
+Simulation::ContactEnergy Simulation::contact_energy(const Contact& c, const Vector6d& di, const Vector6d& dj) const {
+  ContactEnergy t;
+  if (c.state == ContactState::Open) return t;
+  t.normal = c.normal_force * c.normal_force / (2 * model_.joint_pn[c.joint]);
+  if (c.state == ContactState::Locked) {
+    t.shear = c.shear_force * c.shear_force / (2 * model_.joint_ps[c.joint]);
+  } else {  // sliding: the friction force times the slip of the step
+    const double slip = c.geo.es().dot(di) + c.geo.gc().dot(dj);
+    t.friction_loss = std::abs(c.shear_force * slip);
+  }
+  return t;
+}
+
+void Simulation::before_accept(double dt, const Eigen::VectorXd& d) {
   // Work and losses of the step, from the configuration at its start. Every
   // force term is taken exactly as assembled (F . T d), so that for a block
   // without contacts the change of kinetic energy equals the work done.
@@ -165,14 +167,9 @@ void Simulation::before_accept(double dt, const Eigen::VectorXd& d, const std::v
       e.load_work += w.input_work;
     }
   }
-  // (Adding the zero of a contact not sliding leaves the sum as it was.)
-  std::vector<std::array<double, 1>> friction_loss;
-  contact_terms<1>(contacts, friction_loss, nb > parallel_grain(), [&](const Contact& c) {
-    if (c.state != ContactState::Sliding) return std::array<double, 1>{0.0};
-    const double slip = c.geo.es().dot(di(c.vblock)) + c.geo.gc().dot(di(c.eblock));
-    return std::array<double, 1>{std::abs(c.shear_force * slip)};
-  });
-  for (const auto& t : friction_loss) e.friction += t[0];
+  // Summed serially in contact order (the same on any number of threads);
+  // adding the zero of a contact not sliding leaves the sum as it was.
+  for (const ContactEnergy& t : contact_energy_) e.friction += t.friction_loss;
   for (std::size_t k = 0; k < bolts_.size(); ++k) {
     const Bolt& b = model_.bolts[k];
     BoltState& s = bolts_[k];
@@ -193,12 +190,12 @@ void Simulation::after_accept(double /*dt*/) {
   // Stored energy at the end of the step.
   EnergyRecord& e = energy_log_.back();
   e.time = time_;
-  store_energy(e);
+  store_energy(e, contact_energy_);
   e.residual =
       e.input() - (e.stored() - energy_start_.stored()) - e.friction - e.damping - e.breakage - e.radiation;
 }
 
-void Simulation::store_energy(EnergyRecord& e) const {
+void Simulation::store_energy(EnergyRecord& e, const std::vector<ContactEnergy>& contacts) const {
   e.kinetic = e.elastic = e.contact = e.fixed = e.bolts = 0;
   // The per-block terms in parallel; the sums serially, in block order (the
   // same on any number of threads).
@@ -215,19 +212,11 @@ void Simulation::store_energy(EnergyRecord& e) const {
     e.kinetic += 0.5 * twice_kinetic[i];
     e.elastic += strain[i];
   }
-  // Normal and shear springs as two terms, added one after the other (a
-  // zero term leaves the sum as it was).
-  std::vector<std::array<double, 2>> springs;
-  contact_terms<2>(contacts_, springs, nb > parallel_grain(), [&](const Contact& c) {
-    std::array<double, 2> t{0.0, 0.0};
-    if (c.state == ContactState::Open) return t;
-    t[0] = c.normal_force * c.normal_force / (2 * model_.joint_pn[c.joint]);
-    if (c.state == ContactState::Locked) t[1] = c.shear_force * c.shear_force / (2 * model_.joint_ps[c.joint]);
-    return t;
-  });
-  for (const auto& t : springs) {
-    e.contact += t[0];
-    e.contact += t[1];
+  // Normal and shear springs as two terms, added one after the other in
+  // contact order (a zero term leaves the sum as it was).
+  for (const ContactEnergy& t : contacts) {
+    e.contact += t.normal;
+    e.contact += t.shear;
   }
   for (std::size_t k = 0; k < model_.fixed_points.size(); ++k) {
     const FixedPoint& f = model_.fixed_points[k];

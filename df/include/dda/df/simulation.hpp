@@ -184,11 +184,20 @@ class Simulation {
   // runaway.cpp (owned with the physics files).
   void init_physics();
   void assemble_physics(double dt);
-  void before_accept(double dt, const Eigen::VectorXd& d, const std::vector<Contact>& contacts);
+  // What the energy ledger needs of one contact at the end of a step with
+  // increments di, dj of its blocks: the friction loss of the step (sliding)
+  // and the energy of its springs (normal, and shear when locked).
+  struct ContactEnergy {
+    double friction_loss = 0, normal = 0, shear = 0;
+  };
+  ContactEnergy contact_energy(const Contact& c, const Vector6d& di, const Vector6d& dj) const;
+  // Work and losses of the step; contact_energy_ holds the step's contacts'
+  // terms (accept() fills it in its one pass over the contacts).
+  void before_accept(double dt, const Eigen::VectorXd& d);
   void after_accept(double dt);
   // The stored energies (kinetic, elastic, contact, fixed points, bolts) of
-  // the current state into e.
-  void store_energy(EnergyRecord& e) const;
+  // the current state into e; `contacts` holds the terms of contacts_.
+  void store_energy(EnergyRecord& e, const std::vector<ContactEnergy>& contacts) const;
   void settle();
   void check_runaway(const Eigen::VectorXd& d, double moved, double dt, bool at_min_dt) const;
   // Dashpot matrix of a viscous boundary edge in the current configuration,
@@ -208,6 +217,7 @@ class Simulation {
   // MB is neither allocated nor faulted in again every step.
   std::vector<Contact> work_;
   StateChanges state_changes_;
+  std::vector<ContactEnergy> contact_energy_;  // of the step being accepted, one per contact
   // What the step's iteration changes in each contact, as it was at the
   // start of the step: an attempt thrown away puts it back.
   std::vector<ContactIterationState> saved_states_;
