@@ -24,6 +24,13 @@ inline std::string error_of(const std::string& yaml, const std::string& label = 
   return "";
 }
 
-inline std::string data_path(const std::string& name) { return std::string(DDA_TEST_DATA_DIR) + "/" + name; }
+// Built by appending: GCC 12 warns falsely (-Warray-bounds) about
+// std::string(literal) + "/" + name once gtest's headers are precompiled.
+inline std::string data_path(const std::string& name) {
+  std::string path = DDA_TEST_DATA_DIR;
+  path += '/';
+  path += name;
+  return path;
+}
 
 }  // namespace dda::dl::test
