@@ -474,9 +474,9 @@ void Simulation::accept(double dt, const Eigen::VectorXd& d, std::vector<Contact
   // One pass over the contacts (each only its own, in parallel; the counts
   // are order-free): the energy ledger's terms of each, then its friction
   // state advanced. The ledger reads the terms (before_accept, after_accept),
-  // and sums them serially in contact order. Three passes over every
-  // contact (the friction loss, the friction states, the spring energies)
-  // read the contacts' memory three times a step.
+  // and sums them serially in contact order. (A pass each for the friction
+  // loss, the friction states and the spring energies read every contact
+  // three times a step.)
   int open = 0, sliding = 0, locked = 0;
   contact_energy_.resize(contacts.size());
 #pragma omp parallel for schedule(static) reduction(+ : open, sliding, locked) if (model_.block_count() > parallel_grain())
