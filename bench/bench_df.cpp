@@ -13,7 +13,8 @@
 // step spent in contact search (finding the contacts, carrying their states
 // over) / contact geometry (each contact's linearised geometry, the start of
 // forming its springs) / assembly / linear solve / the contacts' state updates
-// after each solve (update_pct) / ending an accepted step: blocks moved,
+// after each solve (update_pct; updated_pct: the share of the contacts
+// updated after a solve, see Model::contact_update_tolerance) / ending an accepted step: blocks moved,
 // stresses, energies (accept_pct); the rest is the step's bookkeeping),
 // near_searches
 // (steps whose near pairs were searched afresh, see near_list.hpp),
@@ -156,6 +157,13 @@ void time_steps(benchmark::State& state, Simulation& sim) {
   state.counters["accept_pct"] = 100 * (t1.accept - t0.accept) / total;
   state.counters["near_searches"] = static_cast<double>(t1.near_searches - t0.near_searches);
   state.counters["solves_per_step"] = static_cast<double>(t1.solves - t0.solves) / n;
+  // The share of contacts updated after a solve: all after the first and
+  // full solves, those of moved blocks after the others.
+  const long solves = t1.solves - t0.solves;
+  state.counters["updated_pct"] =
+      solves > 0 ? 100.0 * static_cast<double>(t1.contact_updates - t0.contact_updates) /
+                       (static_cast<double>(solves) * std::max<double>(1.0, static_cast<double>(sim.contacts().size())))
+                 : 0;
   const long pcg = s1.pcg_solves - s0.pcg_solves;
   state.counters["pcg_it"] = pcg > 0 ? static_cast<double>(s1.pcg_iterations - s0.pcg_iterations) / pcg : 0;
   state.counters["fallbacks"] = static_cast<double>(s1.fallbacks - s0.fallbacks);

@@ -252,6 +252,7 @@ Model build_model(ModelInput in) {
   m.control = in.control;
   m.search_distance = 2.5 * m.control.max_displacement_ratio * *m.control.w0;
   m.contact_tolerance = 1e-12 * *m.control.w0;
+  m.contact_update_tolerance = 1e-3 * m.contact_tolerance;
   return m;
 }
 

@@ -315,12 +315,15 @@ bool Simulation::open_close(double dt, std::vector<Contact>& contacts, Eigen::Ve
   sc.is_changed.resize(contacts.size());
   sc.assembled.resize(contacts.size());
   sc.revisit.resize(contacts.size());
+  sc.unsettled.resize(contacts.size());
+  sc.blocks.resize(contacts.size());
   std::vector<double> friction;
   // Trial solves (linear_solver.hpp) while the states change; an iterate
   // that settles on a trial solve is solved again at full accuracy and
   // checked once more, and the last iterate allowed is always a full solve.
   // After a quiet step the first solve is a full one (quiet_step).
   bool trial = trial_first;
+  moved_blocks_.start(block_radii());
   const TrialScope trial_scope(*solver_);
   for (iterations = 1; iterations <= model_.control.max_open_close; ++iterations) {
     {
@@ -344,10 +347,33 @@ bool Simulation::open_close(double dt, std::vector<Contact>& contacts, Eigen::Ve
     bool changed = false, friction_lags = false;
     {
       const ScopedTimer timer(timings_.contact_update);
+      // After the first solve of an attempt and after a full solve every
+      // contact is updated, so an accepted step is checked whole. After a
+      // later trial solve only the contacts that can differ are: those of a
+      // block that moved more than a thousandth of the dead band since its
+      // contacts were last updated (Model::contact_update_tolerance,
+      // moved_blocks.hpp), those whose state changed in the last update and
+      // those whose friction lags. Another contact's state could flip only
+      // if it sat on the edge of the band to within that thousandth, far
+      // inside the error of a trial solve, and the full solve that ends the
+      // iteration updates it anyway; its forces lag by at most pn times that
+      // distance meanwhile. (Updating every contact after every solve was a
+      // sixth of a 10k-block transient step.)
+      const bool every = iterations == 1 || !was_trial;
+      moved_blocks_.mark(d, model_.contact_update_tolerance, every);
       // Each contact updates only itself: in parallel (|| is order-free).
-#pragma omp parallel for schedule(static) reduction(|| : changed, friction_lags) if (model_.block_count() > parallel_grain())
+      long updated = 0;
+#pragma omp parallel for schedule(static) reduction(|| : changed, friction_lags) reduction(+ : updated) if (model_.block_count() > parallel_grain())
       for (std::size_t k = 0; k < contacts.size(); ++k) {
+        // Decided from compact arrays: the contact itself is not read.
+        if (!every && !sc.unsettled[k] && !moved_blocks_.moved(sc.blocks[k].first) &&
+            !moved_blocks_.moved(sc.blocks[k].second)) {
+          sc.revisit[k] = 0;  // its forces, hence its friction, are those of the last update
+          continue;
+        }
         Contact& c = contacts[k];
+        if (every) sc.blocks[k] = {c.vblock, c.eblock};
+        ++updated;
         const ContactState old = c.state;
         const int old_sign = c.slip_sign;
         const AssembledSprings springs = assembled_springs(c);
@@ -360,8 +386,10 @@ bool Simulation::open_close(double dt, std::vector<Contact>& contacts, Eigen::Ve
         const bool moved = c.state != old;
         sc.is_changed[k] = moved;
         sc.revisit[k] = moved || c.state == ContactState::Sliding;
+        sc.unsettled[k] = moved || !c.friction_settled;
         if (moved) sc.assembled[k] = springs;
       }
+      timings_.contact_updates += updated;
       // Indices only: copying each changed contact here (then 432 bytes, thousands
       // in the first iterates) was a serial pass of its own.
       sc.changed.clear();
@@ -402,6 +430,14 @@ double Simulation::max_vertex_displacement(const Eigen::VectorXd& d) const {
     for (const Vec2& v : blocks_[i].vertices) worst = std::max(worst, (move_point(c, di, v) - v).norm());
   }
   return worst;
+}
+
+std::vector<double> Simulation::block_radii() const {
+  std::vector<double> r(blocks_.size(), 0.0);
+#pragma omp parallel for schedule(static) if (model_.block_count() > parallel_grain())
+  for (std::size_t i = 0; i < blocks_.size(); ++i)
+    for (const Vec2& v : blocks_[i].vertices) r[i] = std::max(r[i], (v - blocks_[i].geometry.centroid).norm());
+  return r;
 }
 
 Eigen::VectorXd Simulation::predicted_step(double dt) const {

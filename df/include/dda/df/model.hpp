@@ -215,6 +215,13 @@ struct Model {
   // displacement that matters (a pull of pn * 2e-11 m is 15 N at pn = 50 E,
   // E = 15 GPa: 0.07 % of the weight of a 1 m^2 block).
   double contact_tolerance = 0;
+  // m: after a trial solve, the open-close iteration updates only the
+  // contacts of blocks that may have moved more than this since their
+  // contacts were last updated (and those that changed state or whose
+  // friction lags); after the first and every full solve, all of them
+  // (moved_blocks.hpp). 1e-3 * contact_tolerance; 0 updates every contact
+  // after every solve.
+  double contact_update_tolerance = 0;
 
   int block_count() const { return static_cast<int>(blocks.size()); }
   // Joint index for an edge's set id (the default joint for negative or unknown ids).

@@ -26,6 +26,7 @@
 #include "dda/df/friction.hpp"
 #include "dda/df/linear_solver.hpp"
 #include "dda/df/model.hpp"
+#include "dda/df/moved_blocks.hpp"
 #include "dda/df/near_list.hpp"
 #include "dda/df/step_timings.hpp"
 #include "dda/df/viscous_boundary.hpp"
@@ -152,6 +153,10 @@ class Simulation {
     std::vector<std::uint8_t> is_changed;     // per contact: in `changed`
     std::vector<AssembledSprings> assembled;  // per contact in `changed`: its springs as assembled
     std::vector<std::uint8_t> revisit;        // per contact: changed, or sliding (its forces can differ)
+    // For the next update (open_close): per contact, changed or its friction
+    // lagging (it is updated whether or not its blocks moved), and its blocks.
+    std::vector<std::uint8_t> unsettled;
+    std::vector<std::pair<int, int>> blocks;
   };
   // The system of the next open-close iterate from the last one: only the
   // contacts `changes` flags to revisit are read; `friction` is as
@@ -180,6 +185,8 @@ class Simulation {
   // Where an iterative solve of a step of length dt starts: every block
   // keeps its velocity and acceleration, d = v dt + a dt^2 / 2.
   Eigen::VectorXd predicted_step(double dt) const;
+  // Each block's radius: the distance from its centroid to its farthest vertex (m).
+  std::vector<double> block_radii() const;
   // Physics extensions, defined in simulation_physics.cpp, settle.cpp and
   // runaway.cpp (owned with the physics files).
   void init_physics();
@@ -217,6 +224,7 @@ class Simulation {
   // MB is neither allocated nor faulted in again every step.
   std::vector<Contact> work_;
   StateChanges state_changes_;
+  MovedBlocks moved_blocks_;  // open_close(): the blocks whose contacts a trial iterate updates
   std::vector<ContactEnergy> contact_energy_;  // of the step being accepted, one per contact
   // What the step's iteration changes in each contact, as it was at the
   // start of the step: an attempt thrown away puts it back.
