@@ -149,9 +149,9 @@ class Simulation {
   // What the last update of the open-close iteration changed, for the
   // next iterate's assembly. Kept between steps only to keep its memory.
   struct StateChanges {
-    std::vector<int> changed;                 // contacts whose state changed, in increasing order
-    std::vector<std::uint8_t> is_changed;     // per contact: in `changed`
-    std::vector<AssembledSprings> assembled;  // per contact in `changed`: its springs as assembled
+    long changed = 0;                         // contacts whose state changed
+    std::vector<std::uint8_t> is_changed;     // per contact: its state changed
+    std::vector<AssembledSprings> assembled;  // per contact whose state changed: its springs as assembled
     std::vector<std::uint8_t> revisit;        // per contact: changed, or sliding (its forces can differ)
     // For the next update (open_close): per contact, changed or its friction
     // lagging (it is updated whether or not its blocks moved), and its blocks.
