@@ -11,7 +11,10 @@
 # search, contact geometry, assembly, solve, the contacts' state updates
 # after each solve and the end of the accepted step, the mean step (dt_us,
 # microseconds of model time: the step control sets it, and a shorter step
-# costs less), and the growth exponent of the cost per step between sizes.
+# costs less), the share of the contacts updated after a solve (updated_pct:
+# after a trial solve only those of blocks that moved, see
+# df/include/dda/df/moved_blocks.hpp), and the growth exponent of the cost
+# per step between sizes.
 #
 #   bash bench/df_layered.sh [STEPS]          # default 30
 #   bash bench/df_layered.sh STEPS REST       # also STEPS steps after REST s of model time
@@ -36,7 +39,7 @@ build="${BUILD:-build}"
 [ -x "$build/bench/bench_df" ] && [ -x "$build/bin/dda" ] || bash scripts/build.sh
 work="${TMPDIR:-/tmp}/dda_bench_layered"
 rm -rf "$work" && mkdir -p "$work"
-printf '%-7s %8s %9s %7s %12s %11s %13s %13s %10s %11s %11s %7s\n' size blocks contacts solves ms_per_step search_pct geometry_pct assembly_pct solve_pct update_pct accept_pct dt_us
+printf '%-7s %8s %9s %7s %12s %11s %13s %13s %10s %11s %11s %7s %12s\n' size blocks contacts solves ms_per_step search_pct geometry_pct assembly_pct solve_pct update_pct accept_pct dt_us updated_pct
 prev_n="" prev_ms=""
 # width x height (m) of the section for about 1k, 10k and 50k blocks (the
 # 60 x 40 m example has 2221 blocks: 0.93 per square metre).
@@ -59,11 +62,11 @@ text = open(sys.argv[1]).read()
 b = json.loads(text[text.index("{"):])["benchmarks"][0]
 print(int(b["blocks"]), int(b["contacts"]), round(b["solves_per_step"], 1), round(b["ms_per_step"], 1),
       round(b["search_pct"], 1), round(b["geometry_pct"], 1), round(b["assembly_pct"], 1), round(b["solve_pct"], 1),
-      round(b["update_pct"], 1), round(b["accept_pct"], 1), round(b["dt_us"], 1))
+      round(b["update_pct"], 1), round(b["accept_pct"], 1), round(b["dt_us"], 1), round(b["updated_pct"], 1))
 PY
 )
-  read -r n c s ms sp gp as so up ap dtu <<<"$line"
-  printf '%-7s %8s %9s %7s %12s %11s %13s %13s %10s %11s %11s %7s\n' "$name" "$n" "$c" "$s" "$ms" "$sp" "$gp" "$as" "$so" "$up" "$ap" "$dtu"
+  read -r n c s ms sp gp as so up ap dtu upd <<<"$line"
+  printf '%-7s %8s %9s %7s %12s %11s %13s %13s %10s %11s %11s %7s %12s\n' "$name" "$n" "$c" "$s" "$ms" "$sp" "$gp" "$as" "$so" "$up" "$ap" "$dtu" "$upd"
   if [ -n "$prev_n" ]; then
     /usr/bin/python3 -c "import math; print('        cost per step grows as N^%.2f from %s to %s blocks' % (math.log($ms / $prev_ms) / math.log($n / $prev_n), $prev_n, $n))"
   fi
