@@ -10,8 +10,9 @@
 //   void multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y,
 //                 const Eigen::Matrix<double, N, N>* symmetric_diagonal) const;
 // (BlockSystem for 2D, LowerBlockCsc<12> for 3D), and optionally
-//   void multiply_rows(x, y, symmetric_diagonal, int first, int last) const;
-// the rows [first, last) of the product on the calling thread (multiply_dot).
+//   void multiply_sweep(x, y, symmetric_diagonal, int first, int last, int chunk, done) const;
+// the rows [first, last) of the product on the calling thread, calling
+// done(lo, hi) on each chunk of rows once final (multiply_dot).
 //
 // Determinism: every vector loop runs over fixed chunks of blocks; the dot
 // products add the chunks' partial sums serially in chunk order, so the
@@ -23,6 +24,7 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <omp.h>
 
 #include "dda/df/block_system.hpp"  // parallel_grain
 #include "spd_inverse.hpp"
@@ -136,22 +138,31 @@ class BlockJacobiPcg {
   }
 
   // q = op p, and p . q (summed in chunk order). An operator that can
-  // multiply a range of block rows on the calling thread (multiply_rows:
-  // BlockSystem) does both in one parallel loop, each chunk's dot right
-  // after its rows, while they are in cache: one pass over p and q and one
-  // barrier fewer per iteration, with the same numbers. (solve() calls
-  // op.multiply() once before, as multiply_rows() asks.)
+  // multiply a range of block rows on the calling thread (multiply_sweep:
+  // BlockSystem) does both in one parallel region, each chunk's dot right
+  // after its rows are final, while they are in cache: one pass over p and
+  // q and one barrier fewer per iteration, with the same numbers. Each
+  // thread takes a run of whole chunks, as a static schedule would. (solve()
+  // calls op.multiply() once before, as multiply_sweep() asks.)
   template <class Op>
   double multiply_dot(const Op& op) {
     const int nb = op.blocks();
     auto dot = [&](int lo, int hi) {
       return p_.segment(N * lo, N * (hi - lo)).dot(q_.segment(N * lo, N * (hi - lo)));
     };
-    if constexpr (requires { op.multiply_rows(p_, q_, diagonal_.data(), 0, 0); }) {
-      return chunked(nb, [&](int lo, int hi) {
-        op.multiply_rows(p_, q_, diagonal_.data(), lo, hi);
-        return dot(lo, hi);
-      });
+    if constexpr (requires { op.multiply_sweep(p_, q_, diagonal_.data(), 0, 0, 1, [](int, int) {}); }) {
+      const int chunks = (nb + kChunkBlocks - 1) / kChunkBlocks;
+      partial_.assign(static_cast<std::size_t>(chunks), 0.0);
+#pragma omp parallel if (nb > parallel_grain() && chunks > 1)
+      {
+        const long threads = omp_get_num_threads(), t = omp_get_thread_num();
+        const int c0 = static_cast<int>(chunks * t / threads), c1 = static_cast<int>(chunks * (t + 1) / threads);
+        op.multiply_sweep(p_, q_, diagonal_.data(), c0 * kChunkBlocks, std::min(nb, c1 * kChunkBlocks), kChunkBlocks,
+                          [&](int lo, int hi) { partial_[lo / kChunkBlocks] = dot(lo, hi); });
+      }
+      double sum = 0;
+      for (const double v : partial_) sum += v;
+      return sum;
     } else {
       op.multiply(p_, q_, diagonal_.data());
       return chunked(nb, dot);

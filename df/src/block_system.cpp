@@ -7,6 +7,8 @@
 #include <cstddef>
 #include <exception>
 
+#include <omp.h>
+
 namespace dda::df {
 namespace {
 
@@ -348,27 +350,49 @@ void BlockSystem::multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y, const M
   merge_extra();
   const int nb = blocks();
   y.resize(static_cast<Eigen::Index>(kDofs) * nb);
-  constexpr int kRows = 64;  // rows per range handed to a thread
-  const int ranges = (nb + kRows - 1) / kRows;
-#pragma omp parallel for schedule(static) if (nb > grain)
-  for (int r = 0; r < ranges; ++r) multiply_rows(x, y, symmetric_diagonal, kRows * r, std::min(nb, kRows * (r + 1)));
+#pragma omp parallel if (nb > grain)
+  {
+    const long threads = omp_get_num_threads(), t = omp_get_thread_num();
+    const int first = static_cast<int>(nb * t / threads), last = static_cast<int>(nb * (t + 1) / threads);
+    multiply_sweep(x, y, symmetric_diagonal, first, last, std::max(1, last - first), [](int, int) {});
+  }
 }
 
-void BlockSystem::multiply_rows(const Eigen::VectorXd& x, Eigen::VectorXd& y, const Matrix6d* symmetric_diagonal,
-                                int first, int last) const {
+void BlockSystem::multiply_sweep(const Eigen::VectorXd& x, Eigen::VectorXd& y, const Matrix6d* symmetric_diagonal,
+                                 int first, int last, int chunk, const std::function<void(int, int)>& done) const {
+  // Row i of K x is D_i x_i, then K_ic x_c for every coupled column c < i
+  // in increasing c, then the sum of K_ri^T x_r over the couplings stored
+  // in column i (rows r > i). A sweep over the columns in increasing order
+  // forms it so: column c adds K_ic x_c to row i (i > c) as it passes, and
+  // row i is final once column i is done. The couplings of this range's
+  // rows with columns before `first` belong to the sweep of another range;
+  // they are added first, in increasing c, so the order of every row's sum
+  // is that of one sweep over all columns, however the rows are shared out.
+  auto x_of = [&](int i) { return x.segment<kDofs>(kDofs * i); };
   for (int i = first; i < last; ++i) {
-    Vector6d acc;
     if (symmetric_diagonal) {
-      acc.noalias() = symmetric_diagonal[i] * x.segment<kDofs>(kDofs * i);
+      y.segment<kDofs>(kDofs * i).noalias() = symmetric_diagonal[i] * x_of(i);
     } else {
       const Matrix6d d = diag_[i].selfadjointView<Eigen::Lower>();
-      acc.noalias() = d * x.segment<kDofs>(kDofs * i);
+      y.segment<kDofs>(kDofs * i).noalias() = d * x_of(i);
     }
-    for (int s = col_start_[i]; s < col_start_[i + 1]; ++s)
-      acc.noalias() += off_[s].transpose() * x.segment<kDofs>(kDofs * col_row_[s]);
-    for (int q = row_start_[i]; q < row_start_[i + 1]; ++q)
-      acc.noalias() += off_[row_slot_[q]] * x.segment<kDofs>(kDofs * row_col_[q]);
-    y.segment<kDofs>(kDofs * i) = acc;
+    for (int q = row_start_[i]; q < row_start_[i + 1] && row_col_[q] < first; ++q)
+      y.segment<kDofs>(kDofs * i).noalias() += off_[row_slot_[q]] * x_of(row_col_[q]);
+  }
+  int lo = first;
+  for (int j = first; j < last; ++j) {
+    const auto xj = x_of(j);
+    Vector6d acc = Vector6d::Zero();
+    for (int s = col_start_[j]; s < col_start_[j + 1]; ++s) {
+      const int i = col_row_[s];
+      acc.noalias() += off_[s].transpose() * x_of(i);
+      if (i < last) y.segment<kDofs>(kDofs * i).noalias() += off_[s] * xj;  // rows past the range: their own sweep's
+    }
+    y.segment<kDofs>(kDofs * j) += acc;
+    if (j + 1 - lo == chunk || j + 1 == last) {
+      done(lo, j + 1);
+      lo = j + 1;
+    }
   }
 }
 
