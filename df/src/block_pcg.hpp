@@ -24,9 +24,8 @@
 #include <vector>
 
 #include <Eigen/Core>
-#include <omp.h>
 
-#include "dda/df/block_system.hpp"  // parallel_grain
+#include "dda/df/block_system.hpp"  // parallel_grain, thread_share
 #include "spd_inverse.hpp"
 
 namespace dda::df {
@@ -155,8 +154,7 @@ class BlockJacobiPcg {
       partial_.assign(static_cast<std::size_t>(chunks), 0.0);
 #pragma omp parallel if (nb > parallel_grain() && chunks > 1)
       {
-        const long threads = omp_get_num_threads(), t = omp_get_thread_num();
-        const int c0 = static_cast<int>(chunks * t / threads), c1 = static_cast<int>(chunks * (t + 1) / threads);
+        const auto [c0, c1] = thread_share(chunks);
         op.multiply_sweep(p_, q_, diagonal_.data(), c0 * kChunkBlocks, std::min(nb, c1 * kChunkBlocks), kChunkBlocks,
                           [&](int lo, int hi) { partial_[lo / kChunkBlocks] = dot(lo, hi); });
       }

@@ -32,6 +32,11 @@ void set_zero(std::vector<Matrix6d>& blocks) {
 int parallel_grain() { return grain; }
 void set_parallel_grain(int blocks) { grain = std::max(1, blocks); }
 
+std::pair<int, int> thread_share(int n) {
+  const long threads = omp_get_num_threads(), t = omp_get_thread_num();
+  return {static_cast<int>(n * t / threads), static_cast<int>(n * (t + 1) / threads)};
+}
+
 BlockSystem::BlockSystem(int blocks) { reset(blocks); }
 
 void BlockSystem::reset(int blocks) {
@@ -352,8 +357,7 @@ void BlockSystem::multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y, const M
   y.resize(static_cast<Eigen::Index>(kDofs) * nb);
 #pragma omp parallel if (nb > grain)
   {
-    const long threads = omp_get_num_threads(), t = omp_get_thread_num();
-    const int first = static_cast<int>(nb * t / threads), last = static_cast<int>(nb * (t + 1) / threads);
+    const auto [first, last] = thread_share(nb);
     multiply_sweep(x, y, symmetric_diagonal, first, last, std::max(1, last - first), [](int, int) {});
   }
 }

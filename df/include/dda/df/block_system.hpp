@@ -51,6 +51,11 @@ namespace dda::df {
 // Default 1000; tests lower it to run the parallel paths on small models.
 int parallel_grain();
 void set_parallel_grain(int blocks);
+// Inside a parallel region: the calling thread's share [first, last) of n
+// items cut into one contiguous run per thread of the team, in thread order
+// (disjoint, together all n; what BlockSystem::multiply_sweep asks of its
+// callers).
+std::pair<int, int> thread_share(int n);
 
 class BlockSystem {
  public:
