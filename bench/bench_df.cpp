@@ -167,6 +167,14 @@ void time_steps(benchmark::State& state, Simulation& sim) {
   const long pcg = s1.pcg_solves - s0.pcg_solves;
   state.counters["pcg_it"] = pcg > 0 ? static_cast<double>(s1.pcg_iterations - s0.pcg_iterations) / pcg : 0;
   state.counters["fallbacks"] = static_cast<double>(s1.fallbacks - s0.fallbacks);
+  // PCG trial solves that took the last solve's residual over, as a share
+  // of the PCG solves, and the share of the block rows they formed afresh.
+  const long kept = s1.pcg_residuals_kept - s0.pcg_residuals_kept;
+  state.counters["kept_pct"] = pcg > 0 ? 100.0 * static_cast<double>(kept) / static_cast<double>(pcg) : 0;
+  state.counters["refreshed_pct"] =
+      kept > 0 ? 100.0 * static_cast<double>(s1.pcg_rows_refreshed - s0.pcg_rows_refreshed) /
+                     (static_cast<double>(kept) * std::max(1, sim.model().block_count()))
+               : 0;
   state.counters["analyses_per_step"] = static_cast<double>(s1.analyses - s0.analyses) / n;
   state.counters["threads"] = omp_get_max_threads();
 }

@@ -12,7 +12,10 @@
 // (BlockSystem for 2D, LowerBlockCsc<12> for 3D), and optionally
 //   void multiply_sweep(x, y, symmetric_diagonal, int first, int last, int chunk, done) const;
 // the rows [first, last) of the product on the calling thread, calling
-// done(lo, hi) on each chunk of rows once final (multiply_dot).
+// done(lo, hi) on each chunk of rows once final (multiply_dot), and
+//   <N-vector> multiply_row(int i, x, symmetric_diagonal) const;
+// row i of the product alone (a trial solve's residual refreshed on the
+// rows that changed, see Since).
 //
 // Determinism: every vector loop runs over fixed chunks of blocks; the dot
 // products add the chunks' partial sums serially in chunk order, so the
@@ -20,6 +23,7 @@
 // long as the operator's multiply is.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <vector>
 
@@ -39,49 +43,118 @@ class BlockJacobiPcg {
   explicit BlockJacobiPcg(int max_iterations) : max_iterations_(max_iterations) {}
 
   long iterations() const { return iterations_; }
+  // Solves that took the last one's residual over, and the rows they formed
+  // afresh, summed (see Since).
+  long residuals_kept() const { return residuals_kept_; }
+  long rows_refreshed() const { return rows_refreshed_; }
+
+  // What a solve may take over from the last one, when that one converged.
+  // `changed` (one flag per block) marks the block rows in which the
+  // operator and b may differ from the last solve's; in the others they
+  // are the same, so the inverses of their diagonal blocks and their
+  // terms of |b| are kept (bit for bit what they would be recomputed as).
+  // With `residual` as well, x is the solution the last solve returned, and
+  // the residual b - op x is formed afresh on the changed rows only and
+  // taken over from the last solve's recursion on the others: no product
+  // over the whole operator. The recursion drifts from b - op x by
+  // rounding, so this is for trial solves (their tolerance is 1e-6). The
+  // operator's pattern must be the last solve's (a BlockSystem with no
+  // couplings added outside it since: the product sweeps it as it is).
+  struct Since {
+    const std::vector<std::uint8_t>* changed = nullptr;
+    bool residual = false;
+  };
 
   // Solves op x = b starting from x, until the preconditioned residual norm
   // sqrt(r' M^-1 r) falls to `tolerance` times that of b; true on
   // convergence. False also when a diagonal block or the operator is not
   // positive definite (in floating point): a direct solver then decides.
   template <class Op>
-  bool solve(const Op& op, const Eigen::VectorXd& b, Eigen::VectorXd& x, double tolerance) {
+  bool solve(const Op& op, const Eigen::VectorXd& b, Eigen::VectorXd& x, double tolerance, const Since& since = {}) {
     const int nb = op.blocks();
     const Eigen::Index n = x.size();
-    if (!precondition(op)) return false;
+    const std::vector<std::uint8_t>* changed = kept_ && kept_size_ == n ? since.changed : nullptr;
+    bool reuse_residual = false;
+    if constexpr (requires { op.multiply_row(0, x, diagonal_.data()); }) reuse_residual = changed && since.residual;
+    kept_ = false;
+    if (!precondition(op, changed)) return false;
     r_.resize(n);
     z_.resize(n);
     p_.resize(n);
     q_.resize(n);
-    // |b|_M^-1, with z as scratch.
-    const double bb = chunked(nb, [&](int lo, int hi) {
-      double s = 0;
-      for (int i = lo; i < hi; ++i) {
-        apply(b, z_, i);
-        s += b.template segment<N>(N * i).dot(z_.template segment<N>(N * i));
+    const int chunks = (nb + kChunkBlocks - 1) / kChunkBlocks;
+    if (changed) {
+      chunk_changed_.assign(static_cast<std::size_t>(chunks), 0);
+      long rows = 0;
+      for (int i = 0; i < nb; ++i)
+        if ((*changed)[i]) {
+          chunk_changed_[i / kChunkBlocks] = 1;
+          ++rows;
+        }
+      if (reuse_residual) {
+        ++residuals_kept_;
+        rows_refreshed_ += rows;
       }
-      return s;
-    });
+    }
+    // |b|_M^-1, by chunks kept for the next solve, with q as scratch.
+    bb_partial_.resize(static_cast<std::size_t>(chunks));
+#pragma omp parallel for schedule(static) if (nb > parallel_grain() && chunks > 1)
+    for (int c = 0; c < chunks; ++c) {
+      if (changed && !chunk_changed_[c]) continue;
+      double sum = 0;
+      for (int i = c * kChunkBlocks; i < std::min(nb, (c + 1) * kChunkBlocks); ++i) {
+        apply(b, q_, i);
+        sum += b.template segment<N>(N * i).dot(q_.template segment<N>(N * i));
+      }
+      bb_partial_[c] = sum;
+    }
+    double bb = 0;
+    for (const double v : bb_partial_) bb += v;
     if (!(bb > 0)) {
       x.setZero();
       return std::isfinite(bb);
     }
     const double target = tolerance * tolerance * bb;
-    op.multiply(x, q_, diagonal_.data());
-    double rz = chunked(nb, [&](int lo, int hi) {
-      double s = 0;
-      for (int i = lo; i < hi; ++i) {
-        const Eigen::Index a = N * i;
-        r_.template segment<N>(a) = b.template segment<N>(a) - q_.template segment<N>(a);
-        apply(r_, z_, i);
-        p_.template segment<N>(a) = z_.template segment<N>(a);
-        s += r_.template segment<N>(a).dot(z_.template segment<N>(a));
+    double rz = 0;
+    if (reuse_residual) {
+      // The last solve left r = b - op x and z = M^-1 r; on the unchanged
+      // rows b, op's row and M's block are those of then.
+      if constexpr (requires { op.multiply_row(0, x, diagonal_.data()); }) {
+        rz = chunked(nb, [&](int lo, int hi) {
+          double s = 0;
+          for (int i = lo; i < hi; ++i) {
+            const Eigen::Index a = N * i;
+            if ((*changed)[i]) {
+              r_.template segment<N>(a) = b.template segment<N>(a) - op.multiply_row(i, x, diagonal_.data());
+              apply(r_, z_, i);
+            }
+            p_.template segment<N>(a) = z_.template segment<N>(a);
+            s += r_.template segment<N>(a).dot(z_.template segment<N>(a));
+          }
+          return s;
+        });
       }
-      return s;
-    });
-    for (int it = 0; it < max_iterations_; ++it) {
-      if (rz <= target) return true;
-      if (!std::isfinite(rz)) return false;
+    } else {
+      op.multiply(x, q_, diagonal_.data());
+      rz = chunked(nb, [&](int lo, int hi) {
+        double s = 0;
+        for (int i = lo; i < hi; ++i) {
+          const Eigen::Index a = N * i;
+          r_.template segment<N>(a) = b.template segment<N>(a) - q_.template segment<N>(a);
+          apply(r_, z_, i);
+          p_.template segment<N>(a) = z_.template segment<N>(a);
+          s += r_.template segment<N>(a).dot(z_.template segment<N>(a));
+        }
+        return s;
+      });
+    }
+    for (int it = 0;; ++it) {
+      if (rz <= target) {
+        kept_ = true;  // r = b - op x (by the recursion) and z = M^-1 r, for the next solve
+        kept_size_ = n;
+        return true;
+      }
+      if (!std::isfinite(rz) || it == max_iterations_) return false;
       const double pq = multiply_dot(op);
       if (!(pq > 0)) return false;  // breakdown: not SPD in floating point
       const double alpha = rz / pq;
@@ -101,7 +174,6 @@ class BlockJacobiPcg {
         return 0.0;
       });
     }
-    return rz <= target;
   }
 
  private:
@@ -113,17 +185,21 @@ class BlockJacobiPcg {
 
   // Symmetric diagonal blocks and their inverses; false if one is not
   // positive definite. A block equal to the one of the last solve keeps its
-  // inverse (most do from one open-close iterate to the next).
+  // inverse (most do from one open-close iterate to the next); with
+  // `changed`, only the flagged blocks are compared (the others are the
+  // last solve's).
   template <class Op>
-  bool precondition(const Op& op) {
+  bool precondition(const Op& op, const std::vector<std::uint8_t>* changed) {
     const int nb = op.blocks();
     if (static_cast<int>(diagonal_.size()) != nb) {
       diagonal_.assign(nb, Block::Constant(std::numeric_limits<double>::quiet_NaN()));
       inverse_.resize(nb);
+      changed = nullptr;
     }
     int bad = 0;
 #pragma omp parallel for schedule(static) reduction(+ : bad) if (nb > parallel_grain())
     for (int i = 0; i < nb; ++i) {
+      if (changed && !(*changed)[i]) continue;
       const Block d = Block(op.diagonal(i)).template selfadjointView<Eigen::Lower>();
       if (d == diagonal_[i]) continue;
       diagonal_[i] = d;
@@ -181,9 +257,12 @@ class BlockJacobiPcg {
   }
 
   int max_iterations_;
-  long iterations_ = 0;
+  long iterations_ = 0, residuals_kept_ = 0, rows_refreshed_ = 0;
   std::vector<Block> diagonal_, inverse_;
-  std::vector<double> partial_;
+  std::vector<double> partial_, bb_partial_;
+  std::vector<std::uint8_t> chunk_changed_;
+  bool kept_ = false;  // the last solve converged: r_, z_, bb_partial_ and the inverses are its own
+  Eigen::Index kept_size_ = 0;
   Eigen::VectorXd r_, z_, p_, q_;
 };
 

@@ -43,6 +43,8 @@ void BlockSystem::reset(int blocks) {
   if (blocks != this->blocks()) sticky_.clear();
   diag_.assign(blocks, Matrix6d::Zero());
   rhs_ = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(kDofs) * blocks);
+  changed_.assign(blocks, 1);
+  all_changed_ = true;
   extra_.clear();
   items_.clear();
   round_start_.assign(1, 0);
@@ -56,6 +58,8 @@ void BlockSystem::reset(int blocks) {
 void BlockSystem::reset(int blocks, const std::vector<std::pair<int, int>>& items) {
   const bool same_size = blocks == this->blocks();
   if (!same_size) sticky_.clear();
+  changed_.assign(blocks, 1);
+  all_changed_ = true;
   if (same_size) {
     set_zero(diag_);
     rhs_.setZero();
@@ -248,7 +252,15 @@ int BlockSystem::slot(int i, int j) const {
   return (it != last && *it == i) ? static_cast<int>(it - col_row_.begin()) : -1;
 }
 
+void BlockSystem::clear_changes() const {
+  std::fill(changed_.begin(), changed_.end(), 0);
+  all_changed_ = false;
+  change_record_ = next_pattern_id();  // one counter serves both: unique, never 0
+}
+
 void BlockSystem::add_coupling(int i, int j, const Matrix6d& kij) {
+  changed_[i] = 1;
+  changed_[j] = 1;
   if (i > j) {
     const int s = slot(i, j);
     if (s >= 0) {
@@ -398,6 +410,20 @@ void BlockSystem::multiply_sweep(const Eigen::VectorXd& x, Eigen::VectorXd& y, c
       lo = j + 1;
     }
   }
+}
+
+Vector6d BlockSystem::multiply_row(int i, const Eigen::VectorXd& x, const Matrix6d* symmetric_diagonal) const {
+  auto x_of = [&](int k) { return x.segment<kDofs>(kDofs * k); };
+  Vector6d y;
+  if (symmetric_diagonal) {
+    y.noalias() = symmetric_diagonal[i] * x_of(i);
+  } else {
+    const Matrix6d d = diag_[i].selfadjointView<Eigen::Lower>();
+    y.noalias() = d * x_of(i);
+  }
+  for (int q = row_start_[i]; q < row_start_[i + 1]; ++q) y.noalias() += off_[row_slot_[q]] * x_of(row_col_[q]);
+  for (int s = col_start_[i]; s < col_start_[i + 1]; ++s) y.noalias() += off_[s].transpose() * x_of(col_row_[s]);
+  return y;
 }
 
 BlockSystem BlockSystem::from_lower(const Eigen::SparseMatrix<double>& lower, const Eigen::VectorXd& rhs) {

@@ -1,5 +1,6 @@
 // The automatic solver choice and PCG's warm start (block_pcg.hpp has the
 // iteration itself), and the LinearSolver defaults.
+#include <cstdint>
 #include <vector>
 
 #include "block_pcg.hpp"
@@ -68,6 +69,8 @@ class HybridSolver final : public LinearSolver {
     s.pcg_solves = pcg_solves_;
     s.pcg_iterations = pcg6_.iterations() + pcg12_.iterations();
     s.fallbacks = fallbacks_;
+    s.pcg_residuals_kept = pcg6_.residuals_kept();
+    s.pcg_rows_refreshed = pcg6_.rows_refreshed();
     return s;
   }
 
@@ -77,6 +80,7 @@ class HybridSolver final : public LinearSolver {
   void set_warm_start(const WarmStart& w) override {
     x_last_ = w.x;
     dt_last_ = w.dt;
+    x_last_solved_ = false;
   }
 
   Eigen::VectorXd solve(const Eigen::SparseMatrix<double>& lower, const Eigen::VectorXd& b) override {
@@ -94,7 +98,9 @@ class HybridSolver final : public LinearSolver {
       ++solves_;
       return direct_->solve(lower, b);
     }
-    if (bs == kDofs) return solve_step(BlockSystem::from_lower(lower, b), dt);
+    if (bs == kDofs) {
+      return solve_step(BlockSystem::from_lower(lower, b), dt);
+    }
     return solve_blocks12(lower, nullptr, b, dt);
   }
 
@@ -112,8 +118,26 @@ class HybridSolver final : public LinearSolver {
   Eigen::VectorXd solve_step(const BlockSystem& sys, double dt) override {
     ++solves_;
     last_was_trial_ = false;
-    if (!use_pcg(sys.blocks())) return direct_->solve_step(sys, dt);
-    return iterate(pcg6_, sys, sys.rhs(), dt, [&] { return direct_->solve_step(sys, dt); });
+    if (!use_pcg(sys.blocks())) {
+      last_record_ = 0;
+      return direct_->solve_step(sys, dt);
+    }
+    // What PCG may take over from its last solve (BlockJacobiPcg::Since):
+    // the rows of this system that did not change since then, if that solve
+    // was of this system with this pattern (the record of changes started
+    // right after it); and for a trial solve from that solution (the
+    // open-close iterates of one step), its residual.
+    BlockJacobiPcg<kDofs>::Since since;
+    const std::uint64_t pattern = sys.pattern_id();
+    if (last_record_ != 0 && sys.change_record() == last_record_ && pattern == last_pattern_) {
+      since.changed = sys.changed_rows();
+      since.residual = trial_ && x_last_solved_ && dt == dt_last_;
+    }
+    Eigen::VectorXd x = iterate(pcg6_, sys, sys.rhs(), dt, [&] { return direct_->solve_step(sys, dt); }, since);
+    sys.clear_changes();
+    last_record_ = sys.change_record();
+    last_pattern_ = pattern;
+    return x;
   }
 
  private:
@@ -125,6 +149,7 @@ class HybridSolver final : public LinearSolver {
   Eigen::VectorXd solve_blocks12(const Eigen::SparseMatrix<double>& lower, const SpringCoupling* coupling,
                                  const Eigen::VectorXd& b, double dt) {
     ++solves_;
+    last_record_ = 0;
     if (!view12_.bind(lower, /*coupling_blocks=*/coupling == nullptr)) {
       ++fallbacks_;
       return direct_->solve(lower, b);
@@ -139,7 +164,8 @@ class HybridSolver final : public LinearSolver {
   // the predicted motion at every step); `direct` solves when PCG does not
   // converge.
   template <class Pcg, class Op, class Direct>
-  Eigen::VectorXd iterate(Pcg& pcg, const Op& op, const Eigen::VectorXd& b, double dt, Direct&& direct) {
+  Eigen::VectorXd iterate(Pcg& pcg, const Op& op, const Eigen::VectorXd& b, double dt, Direct&& direct,
+                          const typename Pcg::Since& since = {}) {
     const Eigen::Index n = b.size();
     if (n == 0) return {};
     Eigen::VectorXd x;
@@ -150,8 +176,10 @@ class HybridSolver final : public LinearSolver {
       x = Eigen::VectorXd::Zero(n);
     }
     ++pcg_solves_;
-    if (pcg.solve(op, b, x, trial_ ? options_.trial_tolerance : options_.tolerance)) {
+    x_last_solved_ = false;
+    if (pcg.solve(op, b, x, trial_ ? options_.trial_tolerance : options_.tolerance, since)) {
       last_was_trial_ = trial_;
+      x_last_solved_ = true;
     } else {
       ++fallbacks_;
       x = direct();
@@ -171,6 +199,8 @@ class HybridSolver final : public LinearSolver {
   long solves_ = 0, pcg_solves_ = 0, fallbacks_ = 0;
   bool trial_ = false, last_was_trial_ = false;
   Eigen::VectorXd x_last_;
+  bool x_last_solved_ = false;  // x_last_ is what PCG's last solve returned (not a warm start set from outside)
+  std::uint64_t last_record_ = 0, last_pattern_ = 0;  // of the 2D system PCG last solved (0: none)
   double dt_last_ = 0;
 };
 

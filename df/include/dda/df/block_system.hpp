@@ -68,13 +68,39 @@ class BlockSystem {
   void reset(int blocks, const std::vector<std::pair<int, int>>& items);
 
   int blocks() const { return static_cast<int>(diag_.size()); }
-  Matrix6d& diagonal(int i) { return diag_[i]; }
+  // The writers (the non-const diagonal(i) and rhs(i), add_coupling) mark
+  // the rows they give access to as changed (see changed_rows()).
+  Matrix6d& diagonal(int i) {
+    changed_[i] = 1;
+    return diag_[i];
+  }
   const Matrix6d& diagonal(int i) const { return diag_[i]; }
   // Adds K_ij (and implicitly K_ji = K_ij^T), i != j. Thread-safe for
   // declared pairs written by one thread at a time (see scatter).
   void add_coupling(int i, int j, const Matrix6d& kij);
-  auto rhs(int i) { return rhs_.segment<kDofs>(kDofs * i); }
+  auto rhs(int i) {
+    changed_[i] = 1;
+    return rhs_.segment<kDofs>(kDofs * i);
+  }
   const Eigen::VectorXd& rhs() const { return rhs_; }
+
+  // The block rows of K and F that may have changed since clear_changes():
+  // those written through diagonal(i), rhs(i) and add_coupling(i, j) (a
+  // flag per block), or nullptr when every row may have (after a reset).
+  // Between two open-close iterates only the rows of the contacts revisited
+  // are written (a few per cent of them once the states settle), and a
+  // solver can keep what it computed from the others in the last solve
+  // (block_pcg.hpp). Marking is a byte store per access, race-free under
+  // scatter's rule that no two threads write one block at a time.
+  const std::vector<std::uint8_t>* changed_rows() const { return all_changed_ ? nullptr : &changed_; }
+  // Starts a new record of changes (the solver, after a solve) and gives it
+  // a number unique over all BlockSystems, change_record(): a system with
+  // that number is the one of the clear plus the rows flagged since (a copy
+  // carries both), which is how a solver knows that the rows not flagged
+  // are those it solved. Bookkeeping only: K and F are not touched, hence
+  // const.
+  void clear_changes() const;
+  std::uint64_t change_record() const { return all_changed_ ? 0 : change_record_; }
 
   // Calls f(k) for every item of the last reset(blocks, items), in parallel
   // rounds (see above). f may write the diagonal blocks and rhs of the two
@@ -115,6 +141,12 @@ class BlockSystem {
   // pattern.
   void multiply_sweep(const Eigen::VectorXd& x, Eigen::VectorXd& y, const Matrix6d* symmetric_diagonal, int first,
                       int last, int chunk, const std::function<void(int, int)>& done) const;
+  // Row i of K x alone: D_i x_i, then K_ic x_c for the coupled columns
+  // c < i, then K_ri^T x_r for the coupled rows r > i (for a residual
+  // refreshed on a few rows; the sums are in another order than the
+  // sweep's, so the row agrees with multiply() to rounding). Reads the
+  // pattern as multiply() leaves it.
+  Vector6d multiply_row(int i, const Eigen::VectorXd& x, const Matrix6d* symmetric_diagonal = nullptr) const;
   // Builds a block system from the lower triangle of a matrix of 6x6 blocks.
   static BlockSystem from_lower(const Eigen::SparseMatrix<double>& lower, const Eigen::VectorXd& rhs);
 
@@ -137,6 +169,10 @@ class BlockSystem {
   mutable std::map<std::uint64_t, Matrix6d> extra_;  // couplings outside the pattern
   mutable std::vector<std::pair<int, int>> sticky_;  // pairs merged from extra_, kept in later patterns
   mutable std::uint64_t pattern_id_ = 0;
+  // Rows written since clear_changes(); all of them after a reset.
+  mutable std::vector<std::uint8_t> changed_;
+  mutable bool all_changed_ = true;
+  mutable std::uint64_t change_record_ = 0;
   // Items and rounds of the last reset(blocks, items).
   std::vector<std::pair<int, int>> items_;
   static constexpr int kParts = 8;  // fixed: it sets the summation order

@@ -54,6 +54,8 @@ struct SolverStats {
   long pcg_solves = 0;        // systems solved by PCG
   long pcg_iterations = 0;    // PCG iterations, summed
   long fallbacks = 0;         // PCG did not converge: CHOLMOD solved instead
+  long pcg_residuals_kept = 0;  // PCG trial solves that took the last solve's residual (block_pcg.hpp)
+  long pcg_rows_refreshed = 0;  // in those, the block rows whose residual was formed afresh, summed
   std::string ordering;       // fill-reducing ordering CHOLMOD chose last ("" if none)
 };
 
