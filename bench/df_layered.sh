@@ -13,8 +13,11 @@
 # microseconds of model time: the step control sets it, and a shorter step
 # costs less), the share of the contacts updated after a solve (updated_pct:
 # after a trial solve only those of blocks that moved, see
-# df/include/dda/df/moved_blocks.hpp), and the growth exponent of the cost
-# per step between sizes.
+# df/include/dda/df/moved_blocks.hpp), the share of the block rows whose
+# residual a trial solve formed afresh (refreshed_pct: the others it took
+# over from the last solve, df/src/block_pcg.hpp), and the growth exponent
+# of the cost between sizes, per step and per second of model time (the
+# larger models take longer steps, and a longer step costs more).
 #
 #   bash bench/df_layered.sh [STEPS]          # default 30
 #   bash bench/df_layered.sh STEPS REST       # also STEPS steps after REST s of model time
@@ -39,8 +42,8 @@ build="${BUILD:-build}"
 [ -x "$build/bench/bench_df" ] && [ -x "$build/bin/dda" ] || bash scripts/build.sh
 work="${TMPDIR:-/tmp}/dda_bench_layered"
 rm -rf "$work" && mkdir -p "$work"
-printf '%-7s %8s %9s %7s %12s %11s %13s %13s %10s %11s %11s %7s %12s\n' size blocks contacts solves ms_per_step search_pct geometry_pct assembly_pct solve_pct update_pct accept_pct dt_us updated_pct
-prev_n="" prev_ms=""
+printf '%-7s %8s %9s %7s %12s %11s %13s %13s %10s %11s %11s %7s %12s %14s\n' size blocks contacts solves ms_per_step search_pct geometry_pct assembly_pct solve_pct update_pct accept_pct dt_us updated_pct refreshed_pct
+prev_n="" prev_ms="" prev_dt=""
 # width x height (m) of the section for about 1k, 10k and 50k blocks (the
 # 60 x 40 m example has 2221 blocks: 0.93 per square metre).
 for size in "41 27" "130 85" "290 190"; do
@@ -62,15 +65,16 @@ text = open(sys.argv[1]).read()
 b = json.loads(text[text.index("{"):])["benchmarks"][0]
 print(int(b["blocks"]), int(b["contacts"]), round(b["solves_per_step"], 1), round(b["ms_per_step"], 1),
       round(b["search_pct"], 1), round(b["geometry_pct"], 1), round(b["assembly_pct"], 1), round(b["solve_pct"], 1),
-      round(b["update_pct"], 1), round(b["accept_pct"], 1), round(b["dt_us"], 1), round(b["updated_pct"], 1))
+      round(b["update_pct"], 1), round(b["accept_pct"], 1), round(b["dt_us"], 1), round(b["updated_pct"], 1),
+      round(b["refreshed_pct"], 1))
 PY
 )
-  read -r n c s ms sp gp as so up ap dtu upd <<<"$line"
-  printf '%-7s %8s %9s %7s %12s %11s %13s %13s %10s %11s %11s %7s %12s\n' "$name" "$n" "$c" "$s" "$ms" "$sp" "$gp" "$as" "$so" "$up" "$ap" "$dtu" "$upd"
+  read -r n c s ms sp gp as so up ap dtu upd rf <<<"$line"
+  printf '%-7s %8s %9s %7s %12s %11s %13s %13s %10s %11s %11s %7s %12s %14s\n' "$name" "$n" "$c" "$s" "$ms" "$sp" "$gp" "$as" "$so" "$up" "$ap" "$dtu" "$upd" "$rf"
   if [ -n "$prev_n" ]; then
-    /usr/bin/python3 -c "import math; print('        cost per step grows as N^%.2f from %s to %s blocks' % (math.log($ms / $prev_ms) / math.log($n / $prev_n), $prev_n, $n))"
+    /usr/bin/python3 -c "import math; g = math.log($n / $prev_n); print('        from %s to %s blocks the cost grows as N^%.2f per step, N^%.2f per model second' % ($prev_n, $n, math.log($ms / $prev_ms) / g, math.log(($ms / $dtu) / ($prev_ms / $prev_dt)) / g))"
   fi
-  prev_n=$n prev_ms=$ms
+  prev_n=$n prev_ms=$ms prev_dt=$dtu
 done
 
 [ -n "$rest" ] || exit 0
