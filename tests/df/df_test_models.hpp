@@ -1,6 +1,7 @@
 #pragma once
 // Small hand-built models shared by the DF tests.
 #include <cmath>
+#include <string>
 
 #include "dda/common/block_model.hpp"
 #include "dda/common/geometry.hpp"
@@ -44,6 +45,25 @@ inline Material rock(double density = 2000, double young = 1e9) {
   m.poisson = 0.25;
   m.plane = PlaneMode::Stress;
   return m;
+}
+
+// A brick wall (running bond, bricks 1 x 0.5 m) of `rows` x `cols` on a
+// base held by three fixed points, under gravity: a contact-rich model.
+inline ModelInput brick_wall(int rows, int cols, const std::string& solver = "auto") {
+  ModelInput in;
+  in.geometry.blocks.push_back(make_block(rectangle(-1, -1, cols + 3, 1)));
+  for (int r = 0; r < rows; ++r)
+    for (int c = 0; c < cols; ++c)
+      in.geometry.blocks.push_back(make_block(rectangle(c + 0.5 * (r % 2), 0.5 * r, 1, 0.5)));
+  in.materials = {rock(2600, 5e9)};
+  JointProperties j;
+  j.friction_deg = 35;
+  in.joint_sets = {j};
+  in.control.dt = 1e-3;
+  in.control.w0 = 1.0;
+  in.control.solver = solver;
+  for (const double x : {-0.5, 0.5 * cols, cols + 1.5}) in.fixed_points.push_back({"base", Vec2(x, -0.5), 0, {}});
+  return in;
 }
 
 }  // namespace dda::df::test

@@ -18,24 +18,7 @@
 namespace dda::df {
 namespace {
 
-// A brick wall (running bond, bricks 1 x 0.5 m) of `rows` x `cols` on a
-// base held by three fixed points, under gravity: a contact-rich model.
-ModelInput brick_wall(int rows, int cols, const std::string& solver = "auto") {
-  ModelInput in;
-  in.geometry.blocks.push_back(test::make_block(test::rectangle(-1, -1, cols + 3, 1)));
-  for (int r = 0; r < rows; ++r)
-    for (int c = 0; c < cols; ++c)
-      in.geometry.blocks.push_back(test::make_block(test::rectangle(c + 0.5 * (r % 2), 0.5 * r, 1, 0.5)));
-  in.materials = {test::rock(2600, 5e9)};
-  JointProperties j;
-  j.friction_deg = 35;
-  in.joint_sets = {j};
-  in.control.dt = 1e-3;
-  in.control.w0 = 1.0;
-  in.control.solver = solver;
-  for (const double x : {-0.5, 0.5 * cols, cols + 1.5}) in.fixed_points.push_back({"base", Vec2(x, -0.5), 0, {}});
-  return in;
-}
+using test::brick_wall;
 
 // Solves every step system with CHOLMOD (its answer drives the run) and
 // with PCG, and records how far apart they are.
