@@ -20,20 +20,8 @@ namespace {
 // runs on both threads. Kept small: on a loaded machine every OpenMP
 // barrier can cost a scheduler time slice.
 ModelInput wall(const std::string& solver) {
-  const int rows = 9, cols = 8;
-  ModelInput in;
-  in.geometry.blocks.push_back(test::make_block(test::rectangle(-1, -1, cols + 3, 1)));
-  for (int r = 0; r < rows; ++r)
-    for (int c = 0; c < cols; ++c)
-      in.geometry.blocks.push_back(test::make_block(test::rectangle(c + 0.5 * (r % 2), 0.5 * r, 1, 0.5)));
-  in.materials = {test::rock(2600, 5e9)};
-  JointProperties j;
-  j.friction_deg = 35;
-  in.joint_sets = {j};
+  ModelInput in = test::brick_wall(9, 8, solver);
   in.control.dt = 2e-3;
-  in.control.w0 = 1.0;
-  in.control.solver = solver;
-  for (const double x : {-0.5, 0.5 * cols, cols + 1.5}) in.fixed_points.push_back({"base", Vec2(x, -0.5), 0, {}});
   return in;
 }
 
