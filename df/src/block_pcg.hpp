@@ -25,6 +25,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -74,8 +75,7 @@ class BlockJacobiPcg {
     const int nb = op.blocks();
     const Eigen::Index n = x.size();
     const std::vector<std::uint8_t>* changed = kept_ && kept_size_ == n ? since.changed : nullptr;
-    bool reuse_residual = false;
-    if constexpr (requires { op.multiply_row(0, x, diagonal_.data()); }) reuse_residual = changed && since.residual;
+    const bool reuse_residual = changed && since.residual && requires { op.multiply_row(0, x, diagonal_.data()); };
     kept_ = false;
     if (!precondition(op, changed)) return false;
     r_.resize(n);
@@ -96,58 +96,45 @@ class BlockJacobiPcg {
         rows_refreshed_ += rows;
       }
     }
-    // |b|_M^-1, by chunks kept for the next solve, with q as scratch.
-    bb_partial_.resize(static_cast<std::size_t>(chunks));
-#pragma omp parallel for schedule(static) if (nb > parallel_grain() && chunks > 1)
-    for (int c = 0; c < chunks; ++c) {
-      if (changed && !chunk_changed_[c]) continue;
-      double sum = 0;
-      for (int i = c * kChunkBlocks; i < std::min(nb, (c + 1) * kChunkBlocks); ++i) {
-        apply(b, q_, i);
-        sum += b.template segment<N>(N * i).dot(q_.template segment<N>(N * i));
-      }
-      bb_partial_[c] = sum;
-    }
-    double bb = 0;
-    for (const double v : bb_partial_) bb += v;
+    // |b|_M^-1, by chunks kept for the next solve (only those holding a
+    // changed row are summed again), with q as scratch.
+    const double bb = chunked(
+        nb,
+        [&](int lo, int hi) {
+          double s = 0;
+          for (int i = lo; i < hi; ++i) {
+            apply(b, q_, i);
+            s += b.template segment<N>(N * i).dot(q_.template segment<N>(N * i));
+          }
+          return s;
+        },
+        bb_partial_, changed ? &chunk_changed_ : nullptr);
     if (!(bb > 0)) {
       x.setZero();
       return std::isfinite(bb);
     }
     const double target = tolerance * tolerance * bb;
-    double rz = 0;
-    if (reuse_residual) {
-      // The last solve left r = b - op x and z = M^-1 r; on the unchanged
-      // rows b, op's row and M's block are those of then.
-      if constexpr (requires { op.multiply_row(0, x, diagonal_.data()); }) {
-        rz = chunked(nb, [&](int lo, int hi) {
-          double s = 0;
-          for (int i = lo; i < hi; ++i) {
-            const Eigen::Index a = N * i;
-            if ((*changed)[i]) {
-              r_.template segment<N>(a) = b.template segment<N>(a) - op.multiply_row(i, x, diagonal_.data());
-              apply(r_, z_, i);
-            }
-            p_.template segment<N>(a) = z_.template segment<N>(a);
-            s += r_.template segment<N>(a).dot(z_.template segment<N>(a));
-          }
-          return s;
-        });
-      }
-    } else {
-      op.multiply(x, q_, diagonal_.data());
-      rz = chunked(nb, [&](int lo, int hi) {
-        double s = 0;
-        for (int i = lo; i < hi; ++i) {
-          const Eigen::Index a = N * i;
+    // The starting residual r = b - op x and z = M^-1 r: from a product over
+    // all of op, or taken over from the last solve, which left them for the
+    // same x, and formed afresh on the changed rows only (on the others b,
+    // op's row and M's block are those of then).
+    if (!reuse_residual) op.multiply(x, q_, diagonal_.data());
+    double rz = chunked(nb, [&](int lo, int hi) {
+      double s = 0;
+      for (int i = lo; i < hi; ++i) {
+        const Eigen::Index a = N * i;
+        if (!reuse_residual) {
           r_.template segment<N>(a) = b.template segment<N>(a) - q_.template segment<N>(a);
           apply(r_, z_, i);
-          p_.template segment<N>(a) = z_.template segment<N>(a);
-          s += r_.template segment<N>(a).dot(z_.template segment<N>(a));
+        } else if ((*changed)[i]) {
+          r_.template segment<N>(a) = b.template segment<N>(a) - row_product(op, i, x);
+          apply(r_, z_, i);
         }
-        return s;
-      });
-    }
+        p_.template segment<N>(a) = z_.template segment<N>(a);
+        s += r_.template segment<N>(a).dot(z_.template segment<N>(a));
+      }
+      return s;
+    });
     for (int it = 0;; ++it) {
       if (rz <= target) {
         kept_ = true;  // r = b - op x (by the recursion) and z = M^-1 r, for the next solve
@@ -244,16 +231,34 @@ class BlockJacobiPcg {
   }
 
   // Runs body(lo, hi) over chunks of blocks in parallel and returns the sum
-  // of its results, added in chunk order.
+  // of its results, added in chunk order. Each chunk's result is left in
+  // `partial`; with `only`, only the flagged chunks run and the others keep
+  // the result they had.
+  template <class Body>
+  double chunked(int nb, Body&& body, std::vector<double>& partial, const std::vector<std::uint8_t>* only = nullptr) {
+    const int chunks = (nb + kChunkBlocks - 1) / kChunkBlocks;
+    partial.resize(static_cast<std::size_t>(chunks));
+#pragma omp parallel for schedule(static) if (nb > parallel_grain() && chunks > 1)
+    for (int c = 0; c < chunks; ++c)
+      if (!only || (*only)[c]) partial[c] = body(c * kChunkBlocks, std::min(nb, (c + 1) * kChunkBlocks));
+    double sum = 0;
+    for (const double v : partial) sum += v;
+    return sum;
+  }
   template <class Body>
   double chunked(int nb, Body&& body) {
-    const int chunks = (nb + kChunkBlocks - 1) / kChunkBlocks;
-    partial_.assign(static_cast<std::size_t>(chunks), 0.0);
-#pragma omp parallel for schedule(static) if (nb > parallel_grain() && chunks > 1)
-    for (int c = 0; c < chunks; ++c) partial_[c] = body(c * kChunkBlocks, std::min(nb, (c + 1) * kChunkBlocks));
-    double sum = 0;
-    for (const double v : partial_) sum += v;
-    return sum;
+    return chunked(nb, std::forward<Body>(body), partial_);
+  }
+
+  // Row i of op x, for an operator that gives single rows (reuse_residual
+  // is false for the others, so this is not reached for them).
+  template <class Op>
+  Segment row_product(const Op& op, int i, const Eigen::VectorXd& x) const {
+    if constexpr (requires { op.multiply_row(i, x, diagonal_.data()); }) {
+      return op.multiply_row(i, x, diagonal_.data());
+    } else {
+      return Segment::Constant(std::numeric_limits<double>::quiet_NaN());
+    }
   }
 
   int max_iterations_;

@@ -98,9 +98,7 @@ class HybridSolver final : public LinearSolver {
       ++solves_;
       return direct_->solve(lower, b);
     }
-    if (bs == kDofs) {
-      return solve_step(BlockSystem::from_lower(lower, b), dt);
-    }
+    if (bs == kDofs) return solve_step(BlockSystem::from_lower(lower, b), dt);
     return solve_blocks12(lower, nullptr, b, dt);
   }
 
