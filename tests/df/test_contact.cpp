@@ -322,6 +322,51 @@ TEST(EntranceEdge, VertexBesideAShortEdgeIsNotAPenetrationOfIt) {
     EXPECT_GT(c.dn, -1e-6) << c.vblock << "/" << c.vertex << " on " << c.eblock << "/" << c.edge;
 }
 
+// A block with a 9 mm arm (an L: a bed boundary 9 mm above a tunnel roof
+// left a sliver of the bed below fused to the block at the wall; a
+// 192k-block tunnel model's mesh, coordinates in m) and the block above
+// resting on the arm: the arm's top edge and the upper block's bottom edge
+// overlap by 6 mm, from the arm's top-left corner A = (294.69801, 129.00913)
+// to the upper block's bottom-right corner P = (294.70397, 129.00913). With
+// the model's search distance of 25 mm, P is within reach of both ends of
+// the arm's 9 mm end edge (edge 3, x = 294.69801) and 6 mm "inside" its
+// line; a contact with it put 33 MN on the arm in the first step and the
+// roof blocks flew at 2 m/s. P is nearer to the arm's top edge (0 mm) than
+// to its end (6 mm), so it is in exact touch only. Expected: one contact,
+// the pair P, A (6 mm apart) resolved to A on the upper block's bottom
+// edge (edge 0) at dn = 0, the first of the tied exact touches.
+TEST(EntranceEdge, CornerOnAThinArmIsNotAPenetrationOfTheArmsEnd) {
+  const std::vector<Polygon2> blocks{{{295.0, 128.29518},
+                                      {295.27006, 128.29518},
+                                      {295.27006, 129.00913},
+                                      {294.69801, 129.00913},
+                                      {294.69801, 129.0},
+                                      {295.0, 129.0}},
+                                     {{293.44099, 129.00913},
+                                      {294.70397, 129.00913},
+                                      {294.70397, 130.64742},
+                                      {293.44099, 130.64742}}};
+  const auto found = find_contacts(blocks, {{0, 1}}, 0.025);
+  expect_one_contact(found, 0, 3, 1, 0, 0.0);
+}
+
+// The other side of that rule: stacked unit squares pressed 0.1 mm into
+// each other, corners over corners (a joint meeting a bed). The upper
+// square's bottom corners lie on the lines of the lower one's side faces,
+// at distance zero from them, yet could not touch them (the upper square
+// would cross them): the top face keeps the contacts. Expected: one
+// contact per corner pair, each between the two faces at dn = -1e-4.
+TEST(EntranceEdge, CornersPressedIntoAFaceAtItsCornersKeepTheFace) {
+  const std::vector<Polygon2> blocks{rectangle(0, 0, 1, 1), rectangle(0, 0.9999, 1, 1)};
+  const auto found = find_contacts(blocks, {{0, 1}}, 0.01);
+  ASSERT_EQ(found.size(), 2u);
+  for (const ContactCandidate& c : found) {
+    const bool faces = (c.eblock == 0 && c.edge == 2) || (c.eblock == 1 && c.edge == 0);
+    EXPECT_TRUE(faces) << c.vblock << "/" << c.vertex << " on " << c.eblock << "/" << c.edge;
+    EXPECT_NEAR(c.dn, -1e-4, 1e-12);
+  }
+}
+
 TEST(EntranceEdge, VertexNearBothEndsOfAShortEdgeMakesOneContact) {
   // Block 0: unit square with its top-right corner chamfered by a 7 mm edge
   // (edge 2, from (1, 0.995) to (0.995, 1)). Block 1: a diamond whose lowest
