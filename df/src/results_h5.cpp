@@ -413,6 +413,9 @@ Results read_results_h5(const std::string& path, bool with_state) {
   out.complete = root.complete;
   out.solver = r.attr_text(r.file(), "solver", "the file").value_or("auto");
 
+  const std::size_t offsets = length(r, "/model/blocks/offsets");
+  if (offsets < 1) r.fail("dataset /model/blocks/offsets is empty");
+  out.block_count = offsets - 1;
   read_series(r, out);
   read_log(r, out);
   read_energy(r, out);

@@ -2,6 +2,7 @@
 #include <iostream>
 
 #include "commands.hpp"
+#include "df_session.hpp"
 #include "dda/common/error.hpp"
 #include "dda/common/model_io.hpp"
 #include "dda/common/model_io3.hpp"
@@ -55,10 +56,12 @@ void add_info_command(CLI::App& app, const GlobalOptions&) {
     } else if (format == "dda-results") {
       const df::Results r = df::read_results_h5(*input, /*with_state=*/false);
       const double t_end = r.log.empty() ? 0.0 : r.log.back().time;
-      std::cout << *input << ": dda-results (" << r.source.input_kind << "), " << r.blocks.blocks.size()
+      std::cout << *input << ": dda-results (" << r.source.input_kind << "), " << r.block_count
                 << " blocks, " << r.log.size() << " steps to t = " << t_end << " s, "
                 << r.point_names.size() << " measurement points, " << r.bolt_names.size() << " bolts, "
                 << (r.complete ? "complete" : "incomplete (resume with `dda df --resume`)") << "\n";
+      std::cout << "energy:          " << energy_balance_line(r.energy) << "\n";
+      if (const std::string w = energy_created_warning(r.energy); !w.empty()) std::cout << "warning:         " << w << "\n";
       print_provenance(r.source.provenance);
       if (*show_scenario) std::cout << "\n" << r.source.provenance.scenario_text;
     } else if (format == df3::kResults3dFormat) {

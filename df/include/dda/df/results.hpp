@@ -49,6 +49,7 @@ struct Results {
 
   // Filled by read_results_h5 (the writer takes them from the Simulation).
   bool complete = false;                // the run reached its end
+  std::size_t block_count = 0;          // blocks of the model (also without with_state, when `blocks` is empty)
   std::vector<std::string> point_names; // measurement points, in model order
   std::vector<int> point_blocks;
   std::vector<StepRecord> log;
