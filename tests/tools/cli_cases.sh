@@ -262,7 +262,16 @@ case_df_resume_reproduces() {
   "$DDA" history out/results.h5 --steps > a.csv && "$DDA" history part.h5 --steps > b.csv || fail "history --steps"
   cmp -s a.csv b.csv || fail "the resumed run's step statistics differ"
   "$DDA" df --resume part.h5 | grep -q "already complete" || fail "resuming a complete run"
-  "$DDA" info out/results.h5 | grep -q "dda-results (scenario), .* complete" || fail "dda info on a results file"
+  "$DDA" info out/results.h5 | grep -q "dda-results (scenario), 2 blocks, .* complete" || fail "dda info on a results file: $("$DDA" info out/results.h5)"
+  # The energy balance: a sound run's line, and the warning for a run that
+  # created energy (its residual made -50 J at record 100, t = 0.1 s, where
+  # the run had moved 89 J).
+  "$DDA" info out/results.h5 | grep -q "^energy: .*at t = 1 s, work done .* residual" || fail "dda info: no energy line"
+  "$DDA" info out/results.h5 | grep -q "created energy" && fail "dda info warns of created energy on a sound run"
+  cp out/results.h5 poked.h5
+  /usr/bin/python3 -c "import h5py; f = h5py.File('poked.h5', 'r+'); f['energy/residual'][100] = -50.0" || fail "h5py"
+  "$DDA" info poked.h5 | grep -q "^warning: .*the run created energy: at t = 0.1 s its energy residual was -50 J" ||
+    fail "dda info shows no warning for created energy: $("$DDA" info poked.h5)"
 }
 
 case_df_history_columns() {

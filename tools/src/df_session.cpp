@@ -131,6 +131,40 @@ void report_run_end(df::RunEnd end, const std::string& summary, const DfStage& s
     say(stage.quiet, "DF: " + summary + " written to " + stage.results_path + "\n");
 }
 
+namespace {
+std::string joules(double e) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g J", e);
+  return buf;
+}
+std::string percent(double r) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g %%", 100 * r);
+  return buf;
+}
+}  // namespace
+
+std::string energy_balance_line(const std::vector<df::EnergyRecord>& log) {
+  if (log.size() < 2) return "no steps";
+  const df::EnergyRecord& e = log.back();
+  const double scale = df::most_energy_created({log.front(), e}).scale;
+  return "at t = " + num(e.time) + " s, work done " + joules(e.input()) + ", stored " +
+         joules(e.stored() - log.front().stored()) + " more than at the start, losses " + joules(e.losses()) +
+         " (friction, damping, bolts, radiation), residual " + joules(e.residual) + " (" +
+         percent(scale > 0 ? e.residual / scale : 0.0) +
+         " of the energy moved; what the penalty springs and the implicit step dissipate, J per m of thickness)";
+}
+
+std::string energy_created_warning(const std::vector<df::EnergyRecord>& log) {
+  const df::EnergyCreated worst = df::most_energy_created(log);
+  if (!(worst.ratio() < -df::kEnergyCreatedWarning)) return "";
+  return "the run created energy: at t = " + num(worst.time) + " s its energy residual was " +
+         joules(worst.residual) + " for " + joules(worst.scale) + " moved (" + percent(worst.ratio()) +
+         "), where contacts and the implicit step only dissipate (sound runs stay above -2 %); look for contacts "
+         "that start deep in a block (overlapping blocks, or slivers thinner than the contact search distance: "
+         "`dda dc --min-area A --slivers merge` merges them) or a step too long for the penalty stiffness.";
+}
+
 df::ResultsSource scenario_source(const YamlNode& root, std::uint64_t blocks_seed, const std::string& blocks_path) {
   df::ResultsSource src;
   src.provenance.scenario_path = root.file();

@@ -6,11 +6,13 @@
 #include <csignal>
 #include <cstdint>
 #include <filesystem>
+#include <iostream>
 #include <string>
 #include <vector>
 
 #include "commands.hpp"
 #include "dda/common/yaml_reader.hpp"
+#include "dda/df/energy.hpp"
 #include "dda/df/results.hpp"
 #include "pipeline.hpp"
 #include "dda/df/run_loop.hpp"
@@ -67,6 +69,13 @@ void write_pvd_series(const std::filesystem::path& dir, const std::vector<double
 // Tells how the run ended: `summary` is "N steps to t = T s (...)". An
 // interrupted run exits with status 130 after saying how to resume.
 void report_run_end(df::RunEnd end, const std::string& summary, const DfStage& stage);
+
+// A run's energy balance in a line ("work done ..., residual ... (x % of
+// the energy moved)"), and a warning sentence when the run created more
+// energy than df::kEnergyCreatedWarning of what it moved (empty otherwise;
+// see df::most_energy_created).
+std::string energy_balance_line(const std::vector<df::EnergyRecord>& log);
+std::string energy_created_warning(const std::vector<df::EnergyRecord>& log);
 
 // A number in its shortest usual form.
 std::string num(double v);
@@ -134,6 +143,10 @@ void run_session(Sim& sim, Results& results, const OutputOptions& output, const 
     }
   }
   progress.finish();
+  if constexpr (requires { sim.energy_log(); }) {
+    // Printed even when quiet: the results are suspect.
+    if (const std::string w = energy_created_warning(sim.energy_log()); !w.empty()) std::cerr << "dda: warning: " << w << "\n";
+  }
   int sliding = 0, locked = 0;
   if (!sim.log().empty()) sliding = sim.log().back().sliding, locked = sim.log().back().locked;
   report_run_end(end,
