@@ -31,6 +31,18 @@
 # REST_SIZES="41x27 130x85" leaves the largest out.
 #   BUILD=/path/to/build bash bench/df_layered.sh   # another build directory (default build)
 #
+# How the cost grows. The step control picks a different dt for each size
+# (the larger models take longer steps in the transient, and a longer step
+# needs more iterates), so the per-step growth of the adaptive runs mixes
+# size with step length. DT (seconds) holds every model's step at that
+# value (its `dt`, which the control then does not exceed; the mean dt_us
+# shows any cut), for the growth at equal steps; SIZES (width x height in
+# m, 0.93 blocks per square metre) takes more sizes, e.g. up to 400k blocks
+# (3.6 GB of memory and a minute and a half in all):
+#   DT=0.0001 SIZES="41x27 130x85 290x190 410x270 580x380 820x540" bash bench/df_layered.sh 20
+# After the table, the growth exponent fitted over all sizes (least squares
+# of log cost against log blocks) and over those of 10k blocks and more.
+#
 # The same bench_df times any model `dda df` runs, e.g. a DDA-for-Windows
 # pair: dda dl model.geo -o l.h5 && dda dc l.h5 -o b.h5 &&
 #   build/bench/bench_df --blocks b.h5 --scenario model.ana --steps 100 --benchmark_filter=BM_Model
@@ -44,12 +56,15 @@ work="${TMPDIR:-/tmp}/dda_bench_layered"
 rm -rf "$work" && mkdir -p "$work"
 printf '%-7s %8s %9s %7s %12s %11s %13s %13s %10s %11s %11s %7s %12s %14s\n' size blocks contacts solves ms_per_step search_pct geometry_pct assembly_pct solve_pct update_pct accept_pct dt_us updated_pct refreshed_pct
 prev_n="" prev_ms="" prev_dt=""
-# width x height (m) of the section for about 1k, 10k and 50k blocks (the
-# 60 x 40 m example has 2221 blocks: 0.93 per square metre).
-for size in "41 27" "130 85" "290 190"; do
-  read -r w h <<<"$size"
-  name="${w}x${h}"
+: > "$work/growth.txt"
+# width x height (m) of the section: by default about 1k, 10k and 50k
+# blocks (the 60 x 40 m example has 2221 blocks: 0.93 per square metre).
+dt_line='s/^  dt: .*/&/'
+[ -z "${DT:-}" ] || dt_line="s/^  dt: .*/  dt: $DT/"
+for name in ${SIZES:-41x27 130x85 290x190}; do
+  w=${name%x*} h=${name#*x}
   sed -e "s/box: \[0, 0, 60, 40\]/box: [0, 0, $w, $h]/" \
+      -e "$dt_line" \
       -e "s/center: \[30, 13\]/center: [$((w / 2)), $((h / 3))]/" \
       -e "/^points:/,/^materials:/{/^  - /d}" \
       -e "s/^points:/points:\n  - {name: crown, kind: measurement, at: [$((w / 2)).1, $((h / 3 + 3)).6]}/" \
@@ -71,11 +86,24 @@ PY
 )
   read -r n c s ms sp gp as so up ap dtu upd rf <<<"$line"
   printf '%-7s %8s %9s %7s %12s %11s %13s %13s %10s %11s %11s %7s %12s %14s\n' "$name" "$n" "$c" "$s" "$ms" "$sp" "$gp" "$as" "$so" "$up" "$ap" "$dtu" "$upd" "$rf"
+  echo "$n $ms $dtu" >> "$work/growth.txt"
   if [ -n "$prev_n" ]; then
     /usr/bin/python3 -c "import math; g = math.log($n / $prev_n); print('        from %s to %s blocks the cost grows as N^%.2f per step, N^%.2f per model second' % ($prev_n, $n, math.log($ms / $prev_ms) / g, math.log(($ms / $dtu) / ($prev_ms / $prev_dt)) / g))"
   fi
   prev_n=$n prev_ms=$ms prev_dt=$dtu
 done
+/usr/bin/python3 - "$work/growth.txt" <<'PY'
+import math, sys
+rows = [tuple(map(float, line.split())) for line in open(sys.argv[1]) if line.strip()]
+def slope(points):  # least squares of log y against log N
+    xs = [math.log(n) for n, _ in points]; ys = [math.log(y) for _, y in points]
+    mx, my = sum(xs) / len(xs), sum(ys) / len(ys)
+    return sum((x - mx) * (y - my) for x, y in zip(xs, ys)) / sum((x - mx) ** 2 for x in xs)
+for label, part in (("all sizes", rows), ("10k blocks and more", [r for r in rows if r[0] >= 9000])):
+    if len(part) >= 3:
+        print("fitted over %s (%d): N^%.2f per step, N^%.2f per model second" % (
+            label, len(part), slope([(n, ms) for n, ms, _ in part]), slope([(n, ms / dt) for n, ms, dt in part])))
+PY
 
 [ -n "$rest" ] || exit 0
 echo
