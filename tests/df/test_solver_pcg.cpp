@@ -10,6 +10,7 @@
 
 #include "df_test_models.hpp"
 #include "forced_threads.hpp"
+#include "random_block_system.hpp"
 #include "dda/common/error.hpp"
 #include "dda/df/block_system.hpp"
 #include "dda/df/linear_solver.hpp"
@@ -241,22 +242,8 @@ TEST(BlockSystemSweep, ProductIsTheSameToTheBitForAnySharingOfTheRows) {
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> u(-1, 1);
   const int nb = 300;
-  std::uniform_int_distribution<int> block(0, nb - 1);
-  std::vector<std::pair<int, int>> items;
-  for (int i = 1; i < nb; ++i) {
-    items.emplace_back(i, i - 1);                           // a bed's neighbours
-    if (i >= 23) items.emplace_back(i, i - 23 + (i % 3));  // the bed below
-  }
-  for (int k = 0; k < 40; ++k) items.emplace_back(block(rng), block(rng));  // some far apart (and a few i == j)
-  BlockSystem sys;
-  sys.reset(nb, items);
-  auto random6 = [&] { return Matrix6d(Matrix6d::NullaryExpr([&] { return u(rng); })); };
-  for (int i = 0; i < nb; ++i) {
-    const Matrix6d a = random6();
-    sys.diagonal(i) += a * a.transpose() + 10 * Matrix6d::Identity();
-  }
-  for (const auto& [a, b] : items)
-    if (a != b) sys.add_coupling(a, b, random6());
+  // Beds of 23 blocks, and 40 pairs far apart.
+  const BlockSystem sys = test::random_layered_system(nb, rng, {.bed = 23, .far_pairs = 40, .diagonal_shift = 10});
   const Eigen::VectorXd x = Eigen::VectorXd::NullaryExpr(6 * nb, [&] { return u(rng); });
   const Eigen::MatrixXd full = Eigen::MatrixXd(sys.full());
   const Eigen::VectorXd expected = full * x;

@@ -10,6 +10,7 @@
 
 #include "block_pcg.hpp"
 #include "df_test_models.hpp"
+#include "random_block_system.hpp"
 #include "dda/df/block_system.hpp"
 #include "dda/df/linear_solver.hpp"
 #include "dda/df/simulation.hpp"
@@ -47,25 +48,9 @@ TEST(BlockSystemChanges, WritersMarkTheirRowsAndAResetMarksEvery) {
   EXPECT_EQ(sys.changed_rows(), nullptr);
 }
 
-// A layered pattern like a bedded rock mass's (neighbours in a bed, the bed
-// below), diagonally dominant like a DDA step matrix.
+// The bedded pattern of random_block_system.hpp, with a right-hand side.
 BlockSystem random_system(int nb, std::mt19937& rng) {
-  std::uniform_real_distribution<double> u(-1, 1);
-  std::vector<std::pair<int, int>> items;
-  for (int i = 1; i < nb; ++i) {
-    items.emplace_back(i, i - 1);
-    if (i >= 17) items.emplace_back(i, i - 17 + (i % 3));
-  }
-  BlockSystem sys;
-  sys.reset(nb, items);
-  auto random6 = [&] { return Matrix6d(Matrix6d::NullaryExpr([&] { return u(rng); })); };
-  for (int i = 0; i < nb; ++i) {
-    const Matrix6d a = random6();
-    sys.diagonal(i) += a * a.transpose() + 12 * Matrix6d::Identity();
-    sys.rhs(i) = Vector6d::NullaryExpr([&] { return u(rng); });
-  }
-  for (const auto& [a, b] : items) sys.add_coupling(a, b, random6());
-  return sys;
+  return test::random_layered_system(nb, rng, {.bed = 17, .far_pairs = 0, .diagonal_shift = 12, .rhs = true});
 }
 
 // What an open-close iterate does to the system: a contact between blocks
