@@ -6,14 +6,16 @@
 
 namespace dda::df {
 
+double energy_moved(const EnergyRecord& start, const EnergyRecord& e) {
+  return std::max(std::abs(e.input()), std::abs(e.stored() - start.stored()) + e.losses());
+}
+
 EnergyCreated most_energy_created(const std::vector<EnergyRecord>& log) {
   EnergyCreated worst;
-  if (log.empty()) return worst;
-  const double stored0 = log.front().stored();
   double scale = 0;
   for (std::size_t k = 1; k < log.size(); ++k) {
     const EnergyRecord& e = log[k];
-    scale = std::max({scale, std::abs(e.input()), std::abs(e.stored() - stored0) + e.losses()});
+    scale = std::max(scale, energy_moved(log.front(), e));
     const EnergyCreated here{e.time, e.residual, scale};
     if (k == 1 || here.ratio() < worst.ratio()) worst = here;
   }

@@ -147,7 +147,7 @@ std::string percent(double r) {
 std::string energy_balance_line(const std::vector<df::EnergyRecord>& log) {
   if (log.size() < 2) return "no steps";
   const df::EnergyRecord& e = log.back();
-  const double scale = df::most_energy_created({log.front(), e}).scale;
+  const double scale = df::energy_moved(log.front(), e);
   return "at t = " + num(e.time) + " s, work done " + joules(e.input()) + ", stored " +
          joules(e.stored() - log.front().stored()) + " more than at the start, losses " + joules(e.losses()) +
          " (friction, damping, bolts, radiation), residual " + joules(e.residual) + " (" +

@@ -43,14 +43,16 @@ struct EnergyRecord {
 // above -1.3 % of the energy moved. A residual far below zero means energy
 // came from an error (a contact that started centimetres deep in a block
 // made 119 kJ in the first step of a 192k-block model, with 243 J of work
-// done). `scale` is the energy moved by then: the largest, up to that
-// record, of the input work and of the stored change plus the losses.
+// done). `scale` is the largest energy_moved() up to that record.
 struct EnergyCreated {
   double time = 0;      // s
   double residual = 0;  // J (per unit thickness); < 0: created
   double scale = 0;     // J
   double ratio() const { return scale > 0 ? residual / scale : 0.0; }
 };
+// The energy moved between the start and record e: the larger of the work
+// done and of the stored change plus the losses.
+double energy_moved(const EnergyRecord& start, const EnergyRecord& e);
 // Record 0 is the start (as in Simulation::energy_log()); a log of it alone
 // gives a zero ratio.
 EnergyCreated most_energy_created(const std::vector<EnergyRecord>& log);
