@@ -1,9 +1,12 @@
 // The 3D analytical sliding solution (seed report, ch. 2): CASES.md V1
 // (closed form under gravity), V3 (block on 20/090 under horizontal
-// sinusoid), V4 (wedge under gravity alone), and contact changes.
+// sinusoid), V4 (wedge under gravity alone), and contact changes; and a
+// second integrator of the same physics on one plane, checked here.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "dda/analysis/sliding3d.hpp"
 #include "dda/common/error.hpp"
@@ -137,4 +140,195 @@ TEST(Sliding3d, BadSetups) {
   n.friction.clear();
   EXPECT_THROW(SlidingSimulator(n, 1e-3), dda::InputError);
   EXPECT_THROW(SlidingSimulator(single(20, 90, 30, no_input()), 0.0), dda::InputError);
+}
+
+// ---------------------------------------------------------------------------
+// A second integrator of the same physics (one plane, Coulomb friction), for
+// the comparisons below. It shares the friction law and nothing of the
+// production step:
+//  * it works in the plane's own coordinates, (down the dip, along the
+//    strike), not with 3D vectors kept on the plane;
+//  * sliding is classical RK4 on dw/dt = m(t) - F(t) w/|w|, friction always
+//    against the current velocity (no friction state held over a step);
+//    steps are at most h and end on the record's samples (its kinks) and on
+//    the output times;
+//  * this equation is stiff at low speed (the velocity's direction relaxes
+//    towards the driving at the rate F/|w|), so steps are also kept below
+//    kAlpha |w| / (F + |m|): RK4 stays stable down to rest;
+//  * from rest the block starts when |m| first exceeds F (located by
+//    bisection); during its first step (h) the stiff relaxation keeps the
+//    velocity along the driving, w' = (|m| - F) m/|m|, which is integrated
+//    there by Simpson's rule;
+//  * it stops when friction decelerates it and the speed falls below 1e-11
+//    m/s; it stays if |m| <= F, otherwise it starts again at once.
+// Lift-off (N < 0) ends the integration.
+namespace second {
+
+using V2 = Eigen::Vector2d;
+
+struct Sample {
+  double t = 0.0;
+  Vec3 u = Vec3::Zero();
+};
+
+struct Motion {
+  std::vector<Sample> samples;  // at the requested output times
+  Vec3 u = Vec3::Zero(), v = Vec3::Zero();
+  double t = 0.0;
+  bool lifted = false;
+  int starts = 0;
+};
+
+Motion slide(const SlidingModel& model, double h, double duration, std::vector<double> outputs,
+             std::vector<double> kinks = {}) {
+  constexpr double kAlpha = 0.5, kRest = 1e-11;
+  const Vec3 n = model.planes.at(0).normal(), d = model.planes[0].dip_vector(), s = n.cross(d);
+  const FrictionLaw& law = model.friction.at(0);
+  struct Load {
+    V2 m;      // driving part in (dip, strike) coordinates
+    double N;  // normal reaction
+  };
+  auto load = [&](double t) {
+    const Vec3 r = Vec3(0, 0, -model.gravity) + model.input.body(t);
+    return Load{V2(r.dot(d), r.dot(s)), -r.dot(n)};
+  };
+  auto excess = [&](double t) {  // |m| - F of a block at rest
+    const Load L = load(t);
+    return L.m.norm() - law.mu(t, 0.0) * L.N;
+  };
+  auto accel = [&](double t, const V2& w) -> V2 {
+    const Load L = load(t);
+    const double speed = w.norm();
+    return L.m - law.mu(t, speed) * L.N * w / speed;
+  };
+  auto along_driving = [&](double t) -> V2 {  // (|m| - F)+ m/|m|
+    const Load L = load(t);
+    const double mm = L.m.norm(), F = law.mu(t, 0.0) * L.N;
+    return mm > F ? V2((mm - F) * L.m / mm) : V2(0, 0);
+  };
+
+  std::vector<double> ends = kinks;
+  ends.insert(ends.end(), outputs.begin(), outputs.end());
+  ends.push_back(duration);
+  std::sort(ends.begin(), ends.end());
+  std::sort(outputs.begin(), outputs.end());
+
+  Motion out;
+  double t = 0.0;
+  V2 x(0, 0), w(0, 0);
+  enum class State { rest, starting, sliding } state = excess(0.0) <= 0.0 ? State::rest : State::starting;
+  std::size_t next_end = 0, next_out = 0;
+  auto record = [&] {
+    while (next_out < outputs.size() && t >= outputs[next_out] - 1e-12) {
+      out.samples.push_back({outputs[next_out], x.x() * d + x.y() * s});
+      ++next_out;
+    }
+  };
+  while (t < duration - 1e-13) {
+    while (next_end < ends.size() && ends[next_end] <= t + 1e-13) ++next_end;
+    const double t_next = std::min(t + h, next_end < ends.size() ? ends[next_end] : duration);
+    if (load(t).N < 0.0) {
+      out.lifted = true;
+      break;
+    }
+    switch (state) {
+      case State::rest:
+        if (excess(t_next) <= 0.0) {
+          t = t_next;
+        } else {  // it starts within this step
+          double a = t, b = t_next;
+          for (int k = 0; k < 200 && b - a > 1e-15; ++k) {
+            const double c = 0.5 * (a + b);
+            (excess(c) > 0.0 ? b : a) = c;
+          }
+          t = b;
+          state = State::starting;
+        }
+        break;
+      case State::starting: {  // a full step h (or to the end), along the driving
+        ++out.starts;
+        const double hh = std::min(h, duration - t);
+        const V2 e0 = along_driving(t), e1 = along_driving(t + hh / 4), e2 = along_driving(t + hh / 2),
+                 e3 = along_driving(t + 3 * hh / 4), e4 = along_driving(t + hh);
+        const V2 w_half = hh / 12 * (e0 + 4 * e1 + e2), w_end = w_half + hh / 12 * (e2 + 4 * e3 + e4);
+        x += hh / 6 * (4 * w_half + w_end);
+        w = w_end;
+        t += hh;
+        state = w.norm() > 0.0 ? State::sliding : State::rest;
+        break;
+      }
+      case State::sliding: {
+        const double speed = w.norm();
+        const Load L = load(t);
+        const double F = law.mu(t, speed) * L.N;
+        if (speed < kRest && F > L.m.dot(w) / speed) {
+          // Comes to rest (what is left of its motion is negligible).
+          w.setZero();
+          state = excess(t) <= 0.0 ? State::rest : State::starting;
+          break;
+        }
+        const double hs = std::min(t_next - t, kAlpha * speed / (F + L.m.norm()));
+        const V2 k1 = accel(t, w);
+        const V2 k2 = accel(t + hs / 2, w + hs / 2 * k1);
+        const V2 k3 = accel(t + hs / 2, w + hs / 2 * k2);
+        const V2 k4 = accel(t + hs, w + hs * k3);
+        x += hs / 6 * (w + 2 * (w + hs / 2 * k1) + 2 * (w + hs / 2 * k2) + (w + hs * k3));
+        w += hs / 6 * (k1 + 2 * k2 + 2 * k3 + k4);
+        t += hs;
+        break;
+      }
+    }
+    record();
+  }
+  out.t = t;
+  out.u = x.x() * d + x.y() * s;
+  out.v = w.x() * d + w.y() * s;
+  return out;
+}
+
+}  // namespace second
+
+namespace {
+
+std::vector<double> every_tenth(double duration) {
+  std::vector<double> t;
+  for (int k = 1; k * 0.1 < duration - 1e-9; ++k) t.push_back(k * 0.1);
+  t.push_back(duration);
+  return t;
+}
+
+constexpr double kStrikeDuration = 2.0 * dda::kPi;
+
+// The case that showed the error: the V3 block (20/090, phi 30) shaken
+// along the strike (north) by a body acceleration 0.5 g sin 10t.
+SlidingModel strike_case() {
+  return single(20, 90, 30, sinusoid(Vec3::UnitY(), 0.5 * kG, 10.0, 0.0, InputMeaning::body));
+}
+
+}  // namespace
+
+// The second integrator itself: the first slip of V3 (shaking in the dip
+// plane, a line motion) has a closed form, a(t) = A sin 10t + B with
+// A = 0.5 g (cos 20 + tan 30 sin 20), B = g (sin 20 - tan 30 cos 20), from
+// rest at sin 10t* = -B/A; and it gives the same strike-case history at h and
+// h/2.
+TEST(Sliding3dSecondIntegrator, ClosedFormAndConvergence) {
+  const SlidingModel v3 = single(20, 90, 30, sinusoid(Vec3::UnitX(), 0.5 * kG, 10.0, 0.0, InputMeaning::body));
+  const double c = std::cos(dda::deg2rad(20)), s = std::sin(dda::deg2rad(20)), mu = std::tan(dda::deg2rad(30));
+  const double A = 0.5 * kG * (c + mu * s), B = kG * (s - mu * c);
+  const double ts = std::asin(-B / A) / 10.0, T = 0.2;
+  const double u = -A / 100.0 * (std::sin(10 * T) - std::sin(10 * ts)) + A / 10.0 * std::cos(10 * ts) * (T - ts) +
+                   B * (T - ts) * (T - ts) / 2.0;
+  const second::Motion first = second::slide(v3, 1e-3, T, {});
+  EXPECT_NEAR(first.u.norm(), u, 1e-10 * u);  // 0.0280895 m
+  EXPECT_EQ(first.starts, 1);
+
+  const SlidingModel strike = strike_case();
+  const second::Motion a = second::slide(strike, 1e-4, kStrikeDuration, every_tenth(kStrikeDuration));
+  const second::Motion b = second::slide(strike, 5e-5, kStrikeDuration, every_tenth(kStrikeDuration));
+  ASSERT_EQ(a.samples.size(), b.samples.size());
+  for (std::size_t k = 0; k < a.samples.size(); ++k)
+    EXPECT_LT((a.samples[k].u - b.samples[k].u).norm(), 1e-8 * a.u.norm());
+  EXPECT_EQ(a.starts, 20);  // two slips per cycle, one each way along the strike
+  EXPECT_FALSE(a.lifted);
 }
