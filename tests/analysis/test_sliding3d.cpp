@@ -1,11 +1,14 @@
 // The 3D analytical sliding solution (seed report, ch. 2): CASES.md V1
 // (closed form under gravity), V3 (block on 20/090 under horizontal
-// sinusoid), V4 (wedge under gravity alone), and contact changes; and a
-// second integrator of the same physics on one plane, checked here.
+// sinusoid), V4 (wedge under gravity alone), contact changes, and a block on
+// one plane shaken along its strike, its dip, and by two- and
+// three-component records, each against a second integrator written here.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <memory>
 #include <vector>
 
 #include "dda/analysis/sliding3d.hpp"
@@ -53,19 +56,24 @@ TEST(Sliding3d, V1ClosedForm) {
 
 // CASES.md V3: plane 20/090, phi 30, r = g [0.5 sin 10t, 0, -1] (body input
 // 0.5 g sin 10t along +x), t = 2 pi: D = (1.165, 0, -0.424), |D| = 1.239 m
-// (seed algorithm, dt 1e-4). We get |D| = 1.2381 m (converged: the same to
-// 5 digits at dt 1e-5); the 0.07% gap is within the 3-digit rounding plus the
-// seed scheme's handling of the stops (its friction direction lags a step).
+// (seed algorithm, dt 1e-4). We get |D| = 1.23812 m at dt 1e-4 and 1e-5, as
+// dda newmark (test_newmark.cpp) and the second integrator below (to 1e-7):
+// the motion is on a line. The 0.07 % gap is the 3-digit rounding of the
+// published value, and perhaps its scheme's stops. (Before the slow-block
+// rule of SlidingSimulator::step we got 1.23796 m at dt 1e-4, 1.23819 m at
+// 1e-5: round-off across the dip, amplified after every start, stopped the
+// block spuriously, by an amount that changed with dt.)
 TEST(Sliding3d, V3HorizontalSinusoid) {
   const Excitation in = sinusoid(Vec3::UnitX(), 0.5 * kG, 10.0, 0.0, InputMeaning::body);
   const SlidingRun run = run_sliding(single(20, 90, 30, in), 1e-4, 2.0 * dda::kPi);
   const SlidingState& end = run.samples.back();
   EXPECT_NEAR(end.t, 2.0 * dda::kPi, 1e-9);
   EXPECT_NEAR(end.u.norm(), 1.239, 0.01 * 1.239);
+  EXPECT_NEAR(end.u.norm(), 1.238121, 2e-6);
   EXPECT_NEAR(end.u.x(), 1.165, 0.01 * 1.165);
   // Cross-slope: zero up to round-off (the normal of 20/090 has a y part of
-  // 1e-17, which the friction direction of a just-starting block amplifies).
-  EXPECT_NEAR(end.u.y(), 0.0, 1e-6);
+  // 1e-17; it used to grow to 5e-9 m, amplified at every start).
+  EXPECT_NEAR(end.u.y(), 0.0, 1e-15);
   EXPECT_NEAR(end.u.z(), -0.424, 0.01 * 0.424);
   // Downslope only: no upslope motion, yield up is 1.19 g (never reached).
   for (const auto& s : run.samples) EXPECT_GE(s.v.x(), -1e-12);
@@ -290,11 +298,53 @@ Motion slide(const SlidingModel& model, double h, double duration, std::vector<d
 
 namespace {
 
+// Largest distance between the production history (every 0.1 s) and the
+// second integrator's, relative to the largest displacement of the latter;
+// and the same for the final displacement alone.
+struct Gap {
+  double path = 0.0, end = 0.0;
+};
+
+Gap gap(const SlidingModel& model, double dt, double duration, const second::Motion& ref) {
+  const int every = static_cast<int>(std::lround(0.1 / dt));
+  const SlidingRun run = run_sliding(model, dt, duration, every);
+  EXPECT_EQ(run.samples.size(), ref.samples.size() + 1);  // + the start
+  double worst = 0.0, largest = 0.0;
+  const std::size_t n = std::min(run.samples.size() - 1, ref.samples.size());
+  for (std::size_t k = 0; k < n; ++k) {
+    EXPECT_NEAR(run.samples[k + 1].t, ref.samples[k].t, 1e-9);
+    worst = std::max(worst, (run.samples[k + 1].u - ref.samples[k].u).norm());
+    largest = std::max(largest, ref.samples[k].u.norm());
+  }
+  Gap g;
+  g.path = worst / largest;
+  g.end = (run.samples.back().u - ref.u).norm() / ref.u.norm();
+  return g;
+}
+
 std::vector<double> every_tenth(double duration) {
   std::vector<double> t;
   for (int k = 1; k * 0.1 < duration - 1e-9; ++k) t.push_back(k * 0.1);
   t.push_back(duration);
   return t;
+}
+
+// A synthetic three-component record (m/s^2, east, north, up) sampled every
+// 0.01 s over 6 s: a few sines per component under an envelope that rises
+// over 1 s, holds to 4 s and dies out at 6 s. Piecewise linear between the
+// samples, as every record.
+std::shared_ptr<const dda::AccelRecord> record3(double vertical) {
+  auto rec = std::make_shared<dda::AccelRecord>();
+  rec->source = "synthetic";
+  for (int i = 0; i <= 600; ++i) {
+    const double t = 0.01 * i;
+    const double env = std::min({1.0, t, (6.0 - t) / 2.0});
+    rec->t.push_back(t);
+    rec->a[0].push_back(env * kG * (0.30 * std::sin(2 * dda::kPi * 1.3 * t) + 0.12 * std::sin(2 * dda::kPi * 3.1 * t + 1)));
+    rec->a[1].push_back(env * kG * (0.25 * std::sin(2 * dda::kPi * 0.9 * t + 2) + 0.10 * std::cos(2 * dda::kPi * 2.2 * t)));
+    rec->a[2].push_back(env * kG * vertical * std::sin(2 * dda::kPi * 2.7 * t + 0.5));
+  }
+  return rec;
 }
 
 constexpr double kStrikeDuration = 2.0 * dda::kPi;
@@ -331,4 +381,90 @@ TEST(Sliding3dSecondIntegrator, ClosedFormAndConvergence) {
     EXPECT_LT((a.samples[k].u - b.samples[k].u).norm(), 1e-8 * a.u.norm());
   EXPECT_EQ(a.starts, 20);  // two slips per cycle, one each way along the strike
   EXPECT_FALSE(a.lifted);
+}
+
+// Shaking along the strike of a single plane: the block slides down the dip
+// and along the strike at once, so its velocity turns while friction acts.
+// The second integrator gives |D| = 0.0573836 m at 2 pi s. Before the fix the
+// production step converged to 0.05673 m, 1.1 % low (dt 1e-4: -0.31 %, 1e-5:
+// -1.24 %, 1e-6: -1.14 %): after every start the block stuttered (stopped and
+// restarted every few steps) for a few milliseconds whatever dt. Now it is
+// first order: +1.5e-4, +1.5e-5 at dt 1e-4, 1e-5.
+TEST(Sliding3d, StrikeShakingAgreesWithSecondIntegrator) {
+  const SlidingModel model = strike_case();
+  const second::Motion ref = second::slide(model, 1e-4, kStrikeDuration, every_tenth(kStrikeDuration));
+  EXPECT_NEAR(ref.u.norm(), 0.0573836, 1e-7);
+  // It moves along the strike and back: the path matters, not only the end.
+  double across = 0.0;
+  for (const auto& s : ref.samples) across = std::max(across, std::abs(s.u.y()));
+  EXPECT_GT(across, 0.003);
+  const Gap coarse = gap(model, 1e-4, kStrikeDuration, ref);
+  const Gap fine = gap(model, 1e-5, kStrikeDuration, ref);
+  std::printf("strike: path / end gap %.2e / %.2e at dt 1e-4, %.2e / %.2e at dt 1e-5\n", coarse.path, coarse.end,
+              fine.path, fine.end);
+  EXPECT_LT(coarse.path, 3e-4);
+  EXPECT_LT(coarse.end, 3e-4);
+  EXPECT_LT(fine.path, 3e-5);
+  EXPECT_LT(fine.end, 3e-5);
+  // Converging on the second integrator, not on a value of its own.
+  EXPECT_LT(fine.end, 0.2 * coarse.end);
+  // The same on a plane of any orientation (35/130, strike towards 220).
+  const SlidingModel oblique =
+      single(35, 130, 38, sinusoid(horizontal(220), 0.6 * kG, 7.0, 0.5, InputMeaning::ground));
+  const second::Motion ref2 = second::slide(oblique, 1e-4, 4.0, every_tenth(4.0));
+  const Gap coarse2 = gap(oblique, 1e-4, 4.0, ref2), fine2 = gap(oblique, 1e-5, 4.0, ref2);
+  std::printf("strike, 35/130: |D| = %.7f m, path / end gap %.2e / %.2e at dt 1e-4, %.2e / %.2e at dt 1e-5\n",
+              ref2.u.norm(), coarse2.path, coarse2.end, fine2.path, fine2.end);
+  EXPECT_LT(coarse2.path, 5e-4);
+  EXPECT_LT(fine2.path, 5e-5);
+  EXPECT_LT(fine2.end, 5e-5);
+  EXPECT_LT(fine2.end, 0.2 * coarse2.end);
+}
+
+// Shaking in the dip plane (V3): a line motion. The velocity has no part
+// across the dip; the production step keeps round-off there at round-off.
+TEST(Sliding3d, DipShakingAgreesWithSecondIntegrator) {
+  const SlidingModel model = single(20, 90, 30, sinusoid(Vec3::UnitX(), 0.5 * kG, 10.0, 0.0, InputMeaning::body));
+  const second::Motion ref = second::slide(model, 1e-4, kStrikeDuration, every_tenth(kStrikeDuration));
+  const Gap coarse = gap(model, 1e-4, kStrikeDuration, ref), fine = gap(model, 1e-5, kStrikeDuration, ref);
+  std::printf("dip: |D| = %.7f m, path / end gap %.2e / %.2e at dt 1e-4, %.2e / %.2e at dt 1e-5\n", ref.u.norm(),
+              coarse.path, coarse.end, fine.path, fine.end);
+  EXPECT_LT(coarse.path, 1e-5);
+  EXPECT_LT(fine.path, 1e-5);
+}
+
+// Two horizontal components (a record, east and north, as ground
+// acceleration) on a plane 25/130: neither along the dip nor the strike.
+TEST(Sliding3d, TwoComponentRecordAgreesWithSecondIntegrator) {
+  const auto rec = record3(0.0);
+  const SlidingModel model = single(25, 130, 32, excitation_from_record(rec, InputMeaning::ground));
+  const second::Motion ref = second::slide(model, 1e-4, 6.0, every_tenth(6.0), rec->t);
+  EXPECT_FALSE(ref.lifted);
+  EXPECT_GT(ref.starts, 3);
+  const Gap coarse = gap(model, 1e-4, 6.0, ref);
+  const Gap fine = gap(model, 1e-5, 6.0, ref);
+  std::printf("two components: |D| = %.7f m, %d starts, path / end gap %.2e / %.2e at dt 1e-4, %.2e / %.2e at 1e-5\n",
+              ref.u.norm(), ref.starts, coarse.path, coarse.end, fine.path, fine.end);
+  EXPECT_LT(coarse.path, 3e-4);
+  EXPECT_LT(coarse.end, 3e-4);
+  EXPECT_LT(fine.path, 3e-5);
+  EXPECT_LT(fine.end, 3e-5);
+}
+
+// Three components: the vertical one changes the normal reaction, hence the
+// friction capacity, all the time.
+TEST(Sliding3d, ThreeComponentRecordAgreesWithSecondIntegrator) {
+  const auto rec = record3(0.3);
+  const SlidingModel model = single(25, 130, 32, excitation_from_record(rec, InputMeaning::ground));
+  const second::Motion ref = second::slide(model, 1e-4, 6.0, every_tenth(6.0), rec->t);
+  EXPECT_FALSE(ref.lifted);
+  EXPECT_GT(ref.starts, 3);
+  const Gap coarse = gap(model, 1e-4, 6.0, ref);
+  const Gap fine = gap(model, 1e-5, 6.0, ref);
+  std::printf("three components: |D| = %.7f m, %d starts, path / end gap %.2e / %.2e at dt 1e-4, %.2e / %.2e at 1e-5\n",
+              ref.u.norm(), ref.starts, coarse.path, coarse.end, fine.path, fine.end);
+  EXPECT_LT(coarse.path, 3e-4);
+  EXPECT_LT(coarse.end, 3e-4);
+  EXPECT_LT(fine.path, 3e-5);
+  EXPECT_LT(fine.end, 3e-5);
 }

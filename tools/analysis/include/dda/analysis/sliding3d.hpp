@@ -14,6 +14,11 @@
 // Integration as in the seed: S = (s_start + s_end)/2 with the friction state
 // of the start of the step, v += S dt, u += v_old dt + S dt^2/2; the block
 // stops when its velocity would turn by more than 90 degrees within a step.
+// Except for a slow block (0 < |v| <= F dt): there friction acts against the
+// velocity at the end of the step, z = v + M dt (M the mean driving part):
+// it stops if |z| <= F dt, else v = z (1 - F dt/|z|). On a line this is the
+// seed's step; off a line the seed's rule made a starting block stutter
+// (SlidingSimulator::step explains it).
 //
 // Contact changes: a negative reaction on one plane of a wedge means the block
 // leaves that plane; it continues on the other plane alone (single face), and
@@ -74,6 +79,8 @@ class SlidingSimulator {
  private:
   struct Eval {
     Vec3 s = Vec3::Zero();
+    Vec3 m = Vec3::Zero();  // driving part (before friction)
+    double cap = 0.0;       // friction capacity F
     double n1 = 0.0, n2 = 0.0;
     bool feasible = true;
   };
