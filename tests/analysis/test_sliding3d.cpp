@@ -338,11 +338,11 @@ std::shared_ptr<const dda::AccelRecord> record3(double vertical) {
   rec->source = "synthetic";
   for (int i = 0; i <= 600; ++i) {
     const double t = 0.01 * i;
-    const double env = std::min({1.0, t, (6.0 - t) / 2.0});
+    const double env = std::min({1.0, t, (6.0 - t) / 2.0}), w = 2 * dda::kPi * t;  // w: 2 pi t
     rec->t.push_back(t);
-    rec->a[0].push_back(env * kG * (0.30 * std::sin(2 * dda::kPi * 1.3 * t) + 0.12 * std::sin(2 * dda::kPi * 3.1 * t + 1)));
-    rec->a[1].push_back(env * kG * (0.25 * std::sin(2 * dda::kPi * 0.9 * t + 2) + 0.10 * std::cos(2 * dda::kPi * 2.2 * t)));
-    rec->a[2].push_back(env * kG * vertical * std::sin(2 * dda::kPi * 2.7 * t + 0.5));
+    rec->a[0].push_back(env * kG * (0.30 * std::sin(1.3 * w) + 0.12 * std::sin(3.1 * w + 1)));
+    rec->a[1].push_back(env * kG * (0.25 * std::sin(0.9 * w + 2) + 0.10 * std::cos(2.2 * w)));
+    rec->a[2].push_back(env * kG * vertical * std::sin(2.7 * w + 0.5));
   }
   return rec;
 }
