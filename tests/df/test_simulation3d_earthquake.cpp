@@ -31,7 +31,7 @@ constexpr double kPi = std::numbers::pi;
 // N/m per contact point, normal and shear. The error against the rigid
 // block comes from the contact springs: every stop leaves the cube ringing
 // on them (undamped), which starts the next slide early. Measured at dt =
-// 1 ms: 2.2 % at 1e9, 1.15 % at 1e10, 0.48 % at 1e11 (dt = 0.5 ms at 1e9:
+// 1 ms: 2.2 % at 1e9, 1.15 % at 1e10, 0.46 % at 1e11 (dt = 0.5 ms at 1e9:
 // 1.4 %). 1e11 is 4e3 x the cube's weight per metre.
 constexpr double kPenalty = 1e11;
 
