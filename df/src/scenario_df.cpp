@@ -236,7 +236,7 @@ Parsed parse(const YamlNode& root) {
   // control
   const YamlNode c = root.child("control");
   std::vector<std::string> keys{"w0", "dynamic", "max_open_close", "penalty_factor", "shear_ratio",
-                                "fixed_penalty_factor", "solver", "initial_equilibrium"};
+                                "fixed_penalty_factor", "solver", "initial_equilibrium", "contact_clusters"};
   keys.insert(keys.end(), std::begin(kRunLengthKeys), std::end(kRunLengthKeys));
   c.allow(keys);
   Control& ctl = p.control;
@@ -258,6 +258,7 @@ Parsed parse(const YamlNode& root) {
   ctl.fixed_penalty_factor = c.number("fixed_penalty_factor", ctl.fixed_penalty_factor, Range::positive());
   ctl.solver = c.choice("solver", {"auto", "cholmod", "pcg"}, "auto");
   ctl.initial_equilibrium = c.flag("initial_equilibrium", false);
+  ctl.contact_clusters = c.flag("contact_clusters", true);
   return p;
 }
 

@@ -299,6 +299,27 @@ bool Simulation::quiet_step() const {
   return last.converged && last.dt_cuts == 0 && last.open_close_iterations <= 2;
 }
 
+Simulation::ContactUpdate Simulation::update_one(std::size_t k, std::vector<Contact>& contacts,
+                                                const Eigen::VectorXd& d, double dt, std::vector<std::uint8_t>& changes) {
+  StateChanges& sc = state_changes_;
+  Contact& c = contacts[k];
+  const ContactState old = c.state;
+  const int old_sign = c.slip_sign;
+  const AssembledSprings springs = assembled_springs(c);
+  c.state = update_contact(c, law_of(c), dt, d.segment<kDofs>(kDofs * c.vblock), d.segment<kDofs>(kDofs * c.eblock),
+                           changes[k] >= 2);
+  ContactUpdate u;
+  u.flipped = c.state != old || (c.state == ContactState::Sliding && c.slip_sign != old_sign);
+  if (u.flipped && changes[k] < 255) ++changes[k];
+  u.lags = !c.friction_settled;
+  u.moved = c.state != old;
+  sc.is_changed[k] = u.moved;
+  sc.revisit[k] = u.moved || c.state == ContactState::Sliding;
+  sc.unsettled[k] = u.moved || !c.friction_settled;
+  if (u.moved) sc.assembled[k] = springs;
+  return u;
+}
+
 bool Simulation::open_close(double dt, std::vector<Contact>& contacts, Eigen::VectorXd& d, int& iterations,
                             bool trial_first) {
   // State changes of each contact in this step: from the second on, the
@@ -371,24 +392,12 @@ bool Simulation::open_close(double dt, std::vector<Contact>& contacts, Eigen::Ve
           sc.revisit[k] = 0;  // its forces, hence its friction, are those of the last update
           continue;
         }
-        Contact& c = contacts[k];
-        if (every) sc.blocks[k] = {c.vblock, c.eblock};
+        if (every) sc.blocks[k] = {contacts[k].vblock, contacts[k].eblock};
         ++updated;
-        const ContactState old = c.state;
-        const int old_sign = c.slip_sign;
-        const AssembledSprings springs = assembled_springs(c);
-        c.state = update_contact(c, law_of(c), dt, d.segment<kDofs>(kDofs * c.vblock),
-                                 d.segment<kDofs>(kDofs * c.eblock), changes[k] >= 2);
-        const bool flipped = c.state != old || (c.state == ContactState::Sliding && c.slip_sign != old_sign);
-        if (flipped && changes[k] < 255) ++changes[k];
-        changed = changed || flipped;
-        friction_lags = friction_lags || !c.friction_settled;
-        const bool moved = c.state != old;
-        sc.is_changed[k] = moved;
-        sc.revisit[k] = moved || c.state == ContactState::Sliding;
-        sc.unsettled[k] = moved || !c.friction_settled;
-        if (moved) sc.assembled[k] = springs;
-        changed_count += moved;
+        const ContactUpdate u = update_one(k, contacts, d, dt, changes);
+        changed = changed || u.flipped;
+        friction_lags = friction_lags || u.lags;
+        changed_count += u.moved;
       }
       timings_.contact_updates += updated;
       sc.changed = changed_count;
@@ -402,9 +411,19 @@ bool Simulation::open_close(double dt, std::vector<Contact>& contacts, Eigen::Ve
     if (!changed && !friction_lags) {
       if (!was_trial) return true;
       trial = false;
-    } else if (iterations == 1) {
-      trial = true;  // a full first solve (trial_first false) that did not settle: trials from here
+      continue;
     }
+    if (model_.control.contact_clusters && iterations < model_.control.max_open_close) {
+      // The changes settled on the blocks around them: the next global
+      // solve checks them, at full accuracy (contact_clusters.cpp).
+      const bool settled = settle_clusters(dt, contacts, d, changes, friction);
+      solver_->set_warm_start({d, dt});
+      if (settled) {
+        trial = false;
+        continue;
+      }
+    }
+    if (iterations == 1) trial = true;  // a full first solve (trial_first false) that did not settle: trials from here
   }
   iterations = model_.control.max_open_close;
   return false;

@@ -153,6 +153,9 @@ struct Control {
   std::optional<double> w0;          // m; default half the model height
   double dynamic = 1.0;              // k in [0, 1]: fraction of the end velocity carried on
   int max_open_close = 6;            // open-close iterations before dt is cut
+  // Settle state changes on the blocks around them between global solves
+  // (contact_clusters.cpp); false: every iterate solves the whole system.
+  bool contact_clusters = true;
   double penalty_factor = 50;        // default pn = penalty_factor * largest E (unit thickness)
   double shear_ratio = 1.0;          // default ps = shear_ratio * pn
   double fixed_penalty_factor = 10;  // default fixed-point penalty = factor * pn

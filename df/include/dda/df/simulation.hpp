@@ -163,6 +163,25 @@ class Simulation {
   // assemble() leaves it, and is kept up to date.
   void reassemble(double dt, const std::vector<Contact>& contacts, const StateChanges& changes,
                   std::vector<double>& friction);
+  // The state update of contact k from the increments d (open_close and
+  // the clusters): writes k's flags in state_changes_ and counts its state
+  // changes in `changes` (from the second on the contact is held).
+  struct ContactUpdate {
+    bool flipped = false;  // state or slip direction changed
+    bool moved = false;    // state changed (its springs must be swapped)
+    bool lags = false;     // sliding, and its friction does not yet agree with its normal force
+  };
+  ContactUpdate update_one(std::size_t k, std::vector<Contact>& contacts, const Eigen::VectorXd& d, double dt,
+                           std::vector<std::uint8_t>& changes);
+  // Contact clusters (contact_clusters.cpp): after a global solve whose
+  // update changed a few contacts, their states are settled by solves on
+  // the blocks around them alone, the rest of the model held where the
+  // global solve put it; true when they settled (the caller then verifies
+  // with a full global solve), false when the cluster grew past a quarter
+  // of the model or did not settle (the caller goes on globally). d is
+  // corrected on the cluster in both cases.
+  bool settle_clusters(double dt, std::vector<Contact>& contacts, Eigen::VectorXd& d,
+                       std::vector<std::uint8_t>& changes, std::vector<double>& friction);
   // The open-close iteration of one attempt; true when the states settled.
   // With trial_first false the first solve is a full one (see quiet_step).
   bool open_close(double dt, std::vector<Contact>& contacts, Eigen::VectorXd& d, int& iterations,
