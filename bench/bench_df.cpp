@@ -32,7 +32,9 @@
 // model time reached and the final position of every measurement point.
 // Add --benchmark_min_time=N (seconds) or run a fixed number of steps with
 // --steps N; --skip N takes N steps before the timing starts (default 3),
-// e.g. to time a model once its start-up transient has died out.
+// e.g. to time a model once its start-up transient has died out;
+// --clusters 0 sets control.contact_clusters false (every open-close
+// iterate a solve of the whole system), 1 (default) leaves it on.
 // --resume RESULTS.h5 (with --scenario) starts from the state saved in a
 // results file of that model (`dda df` keeps it at the end of a run, or
 // at --stop-at-step): the steps of a model that has come to rest, say,
@@ -113,6 +115,7 @@ const char* solver_name(int code) { return code == 1 ? "cholmod" : code == 2 ? "
 // A step that throws (a model that blows up) ends the benchmark with its
 // message instead of aborting the program.
 int g_skip_steps = 3;  // steps taken before timing starts (--skip)
+bool g_clusters = true;  // control.contact_clusters of --scenario models (--clusters 0|1)
 
 void time_steps(benchmark::State& state, Simulation& sim) {
   try {
@@ -157,6 +160,12 @@ void time_steps(benchmark::State& state, Simulation& sim) {
   state.counters["accept_pct"] = 100 * (t1.accept - t0.accept) / total;
   state.counters["near_searches"] = static_cast<double>(t1.near_searches - t0.near_searches);
   state.counters["solves_per_step"] = static_cast<double>(t1.solves - t0.solves) / n;
+  // Solves on contact clusters (contact_clusters.cpp) and their CG iterations.
+  state.counters["local_solves_per_step"] = static_cast<double>(t1.local_solves - t0.local_solves) / n;
+  state.counters["local_it"] = t1.local_solves > t0.local_solves
+                                   ? static_cast<double>(t1.local_iterations - t0.local_iterations) /
+                                         static_cast<double>(t1.local_solves - t0.local_solves)
+                                   : 0;
   // The share of contacts updated after a solve: all after the first and
   // full solves, those of moved blocks after the others.
   const long solves = t1.solves - t0.solves;
@@ -275,6 +284,8 @@ int main(int argc, char** argv) {
       steps = std::atoi(argv[++i]);
     } else if (std::strcmp(argv[i], "--resume") == 0 && has_value) {
       resume = argv[++i];
+    } else if (std::strcmp(argv[i], "--clusters") == 0 && has_value) {
+      g_clusters = std::atoi(argv[++i]) != 0;
     } else if (std::strcmp(argv[i], "--skip") == 0 && has_value) {
       g_skip_steps = std::max(0, std::atoi(argv[++i]));
     } else {
@@ -299,7 +310,9 @@ int main(int argc, char** argv) {
             throw dda::InputError(resume + ": holds no saved state to start from (not a results file of `dda df`?).");
           start = std::make_shared<const SimulationState>(std::move(*saved.checkpoint));
         }
-        register_model(scenario, build_model(scenario_input(scenario, blocks_file)), steps, start);
+        ModelInput in = scenario_input(scenario, blocks_file);
+        in.control.contact_clusters = g_clusters;
+        register_model(scenario, build_model(std::move(in)), steps, start);
       } else {
         ModelInput in;
         in.geometry = dda::read_blocks_h5(blocks_file);

@@ -7,7 +7,8 @@
 # blocks, by widening and heightening the section, cuts it with `dda dl` and
 # `dda dc`, and times STEPS steps of each from rest with bench_df (the
 # gravity transient, the hardest part of the run: 10-15 solves a step).
-# Prints blocks, contacts, solves and ms per step, the shares of contact
+# Prints blocks, contacts, solves per step (of the whole system + on contact
+# clusters, docs/solver2d.md) and ms per step, the shares of contact
 # search, contact geometry, assembly, solve, the contacts' state updates
 # after each solve and the end of the accepted step, the mean step (dt_us,
 # microseconds of model time: the step control sets it, and a shorter step
@@ -30,6 +31,8 @@
 # Running to 1 s takes about 20 s, 2.5 min and 30 min at the three sizes;
 # REST_SIZES="41x27 130x85" leaves the largest out.
 #   BUILD=/path/to/build bash bench/df_layered.sh   # another build directory (default build)
+#   CLUSTERS=0 bash bench/df_layered.sh             # the timed steps without contact clusters
+#                                                   # (control.contact_clusters: false, docs/solver2d.md)
 #
 # How the cost grows. The step control picks a different dt for each size
 # (the larger models take longer steps in the transient, and a longer step
@@ -72,13 +75,14 @@ for name in ${SIZES:-41x27 130x85 290x190}; do
       examples/tunnel_roof/tunnel_roof.yaml > "$work/$name.yaml"
   "$build/bin/dda" dl "$work/$name.yaml" -o "$work/$name.lines.h5" -q
   "$build/bin/dda" dc "$work/$name.lines.h5" -o "$work/$name.blocks.h5" -q
-  "$build/bench/bench_df" --blocks "$work/$name.blocks.h5" --scenario "$work/$name.yaml" --steps "$steps" \
+  "$build/bench/bench_df" --blocks "$work/$name.blocks.h5" --scenario "$work/$name.yaml" --steps "$steps" --clusters "${CLUSTERS:-1}" \
       --benchmark_filter=BM_Model --benchmark_format=json > "$work/$name.json" 2> "$work/$name.log"
   line=$(/usr/bin/python3 - "$work/$name.json" <<'PY'
 import json, sys
 text = open(sys.argv[1]).read()
 b = json.loads(text[text.index("{"):])["benchmarks"][0]
-print(int(b["blocks"]), int(b["contacts"]), round(b["solves_per_step"], 1), round(b["ms_per_step"], 1),
+print(int(b["blocks"]), int(b["contacts"]), "%.1f+%.1f" % (b["solves_per_step"], b["local_solves_per_step"]),
+      round(b["ms_per_step"], 1),
       round(b["search_pct"], 1), round(b["geometry_pct"], 1), round(b["assembly_pct"], 1), round(b["solve_pct"], 1),
       round(b["update_pct"], 1), round(b["accept_pct"], 1), round(b["dt_us"], 1), round(b["updated_pct"], 1),
       round(b["refreshed_pct"], 1))
