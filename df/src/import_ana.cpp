@@ -15,6 +15,7 @@
 //       <Planestrain flag="no"/>                  plane strain / stress
 //       <Saveinterval step="1"/>                  control.output_every
 //       <Gravaccel value="9.81"/>                 gravity (else unit weight / unit mass)
+//       <Gravity flag="yes"/>                     control.initial_equilibrium (the gravity turn-on phase)
 //       <Blockmaterial type="1"> <Unitmass/> <Unitweight/> <Youngsmod/> <Poissonratio/>
 //            <Damping/> <Istress/> <Ivelocity/> <Istrain/> </Blockmaterial>
 //       <Jointproperties type="1"> <Friction/> <Cohesion/> <Tensile/> </Jointproperties>
@@ -203,10 +204,18 @@ AnaImport import_ana(const std::string& text, const std::string& label, const Bl
       grav_accel = r.attr_number(e, "value");
       if (*grav_accel < 0) r.fail(e, "needs value >= 0, got " + fmt(*grav_accel));
     } else if (name == "Gravity") {
-      if (r.flag(e))
+      // The old program's gravity turn-on phase loads the model with every
+      // contact held before its dynamics starts: what initial_equilibrium
+      // does. Ignoring it gave a different problem, a wall switched on under
+      // gravity, which bounces on its contact springs (and, on a 1,601-brick
+      // wall, changed contact states in every iterate of every step).
+      if (r.flag(e)) {
+        ctl.initial_equilibrium = true;
         out.warnings.push_back(label + ":" + std::to_string(e->GetLineNum()) +
-                               ": <Gravity flag=\"yes\"> (the old program's gravity turn-on phase) is ignored; "
-                               "gravity acts from the first step.");
+                               ": <Gravity flag=\"yes\"> (the old program's gravity turn-on phase) is run as "
+                               "control.initial_equilibrium: the model is relaxed under gravity with every contact "
+                               "held before t = 0.");
+      }
     } else if (name == "Rotation" || name == "Autotimestep" || name == "AConstants" || name == "Writevertices") {
       // Always exact rotation and automatic step control here; the constants are unused.
     } else if (name == "ContactDamping" || name == "Boltproperties") {

@@ -92,6 +92,9 @@ TEST(IoAna, ErrorsNameFileAndLine) {
   const AnaImport g = import_ana(replaced(ana, "<Gravity flag=\"no\"/>", "<Gravity flag=\"yes\"/>"), "m.ana",
                                  pushblock_blocks(), "b.h5");
   EXPECT_EQ(g.warnings.size(), 1u);
+  // The old program's gravity turn-on phase is our relaxation before t = 0.
+  EXPECT_TRUE(g.scenario.input.control.initial_equilibrium);
+  EXPECT_FALSE(import_ana(ana, "m.ana", pushblock_blocks(), "b.h5").scenario.input.control.initial_equilibrium);
 }
 
 }  // namespace
