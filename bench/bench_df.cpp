@@ -33,8 +33,9 @@
 // Add --benchmark_min_time=N (seconds) or run a fixed number of steps with
 // --steps N; --skip N takes N steps before the timing starts (default 3),
 // e.g. to time a model once its start-up transient has died out;
-// --clusters 0 sets control.contact_clusters false (every open-close
-// iterate a solve of the whole system), 1 (default) leaves it on.
+// --clusters 1 sets control.contact_clusters true (contact clusters
+// between global solves), 0 false (every open-close iterate a solve of the
+// whole system); without it the model's own setting holds.
 // --resume RESULTS.h5 (with --scenario) starts from the state saved in a
 // results file of that model (`dda df` keeps it at the end of a run, or
 // at --stop-at-step): the steps of a model that has come to rest, say,
@@ -115,7 +116,7 @@ const char* solver_name(int code) { return code == 1 ? "cholmod" : code == 2 ? "
 // A step that throws (a model that blows up) ends the benchmark with its
 // message instead of aborting the program.
 int g_skip_steps = 3;  // steps taken before timing starts (--skip)
-bool g_clusters = true;  // control.contact_clusters of --scenario models (--clusters 0|1)
+int g_clusters = -1;  // control.contact_clusters of --scenario models (--clusters 0|1; -1: the model's own)
 
 void time_steps(benchmark::State& state, Simulation& sim) {
   try {
@@ -285,7 +286,7 @@ int main(int argc, char** argv) {
     } else if (std::strcmp(argv[i], "--resume") == 0 && has_value) {
       resume = argv[++i];
     } else if (std::strcmp(argv[i], "--clusters") == 0 && has_value) {
-      g_clusters = std::atoi(argv[++i]) != 0;
+      g_clusters = std::atoi(argv[++i]) != 0 ? 1 : 0;
     } else if (std::strcmp(argv[i], "--skip") == 0 && has_value) {
       g_skip_steps = std::max(0, std::atoi(argv[++i]));
     } else {
@@ -311,7 +312,7 @@ int main(int argc, char** argv) {
           start = std::make_shared<const SimulationState>(std::move(*saved.checkpoint));
         }
         ModelInput in = scenario_input(scenario, blocks_file);
-        in.control.contact_clusters = g_clusters;
+        if (g_clusters >= 0) in.control.contact_clusters = g_clusters == 1;
         register_model(scenario, build_model(std::move(in)), steps, start);
       } else {
         ModelInput in;

@@ -16,7 +16,7 @@
 #   bash bench/brick_wall.sh [STEPS]                 # default 200 steps; 101, 401, 1601 blocks
 #   SIZES="101 401 1601 10001" bash bench/brick_wall.sh
 #   THREADS=2 bash bench/brick_wall.sh               # default 1
-#   CLUSTERS=0 bash bench/brick_wall.sh              # every iterate a global solve (control.contact_clusters: false)
+#   CLUSTERS=0 bash bench/brick_wall.sh              # every iterate a global solve (control.contact_clusters: false; default 1, on)
 #   BUILD=/path/to/build bash bench/brick_wall.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -31,8 +31,8 @@
 # Running to 1 s takes about 20 s, 2.5 min and 30 min at the three sizes;
 # REST_SIZES="41x27 130x85" leaves the largest out.
 #   BUILD=/path/to/build bash bench/df_layered.sh   # another build directory (default build)
-#   CLUSTERS=0 bash bench/df_layered.sh             # the timed steps without contact clusters
-#                                                   # (control.contact_clusters: false, docs/solver2d.md)
+#   CLUSTERS=1 bash bench/df_layered.sh             # the timed steps with contact clusters
+#                                                   # (control.contact_clusters, docs/solver2d.md; 0: without)
 #
 # How the cost grows. The step control picks a different dt for each size
 # (the larger models take longer steps in the transient, and a longer step
@@ -75,7 +75,7 @@ for name in ${SIZES:-41x27 130x85 290x190}; do
       examples/tunnel_roof/tunnel_roof.yaml > "$work/$name.yaml"
   "$build/bin/dda" dl "$work/$name.yaml" -o "$work/$name.lines.h5" -q
   "$build/bin/dda" dc "$work/$name.lines.h5" -o "$work/$name.blocks.h5" -q
-  "$build/bench/bench_df" --blocks "$work/$name.blocks.h5" --scenario "$work/$name.yaml" --steps "$steps" --clusters "${CLUSTERS:-1}" \
+  "$build/bench/bench_df" --blocks "$work/$name.blocks.h5" --scenario "$work/$name.yaml" --steps "$steps" ${CLUSTERS:+--clusters "$CLUSTERS"} \
       --benchmark_filter=BM_Model --benchmark_format=json > "$work/$name.json" 2> "$work/$name.log"
   line=$(/usr/bin/python3 - "$work/$name.json" <<'PY'
 import json, sys

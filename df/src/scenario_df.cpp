@@ -258,7 +258,7 @@ Parsed parse(const YamlNode& root) {
   ctl.fixed_penalty_factor = c.number("fixed_penalty_factor", ctl.fixed_penalty_factor, Range::positive());
   ctl.solver = c.choice("solver", {"auto", "cholmod", "pcg"}, "auto");
   ctl.initial_equilibrium = c.flag("initial_equilibrium", false);
-  ctl.contact_clusters = c.flag("contact_clusters", true);
+  ctl.contact_clusters = c.flag("contact_clusters", ctl.contact_clusters);
   return p;
 }
 
