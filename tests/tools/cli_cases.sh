@@ -319,8 +319,10 @@ case_df_progress_lines() {
   # 10 000 steps of 0.1 ms, output going to files (not a terminal): with
   # DDA_PROGRESS_SECONDS=0.01 a progress line every 0.02 s on stderr.
   sed 's/dt: 0.001,/dt: 0.0001,/' incline.yaml > fine.yaml
-  DDA_PROGRESS_SECONDS=0.01 "$DDA" df fine.yaml --blocks blocks.h5 -o r.h5 > out.txt 2> err.txt ||
+  DDA_PROGRESS_SECONDS=0.01 OMP_NUM_THREADS=2 "$DDA" df fine.yaml --blocks blocks.h5 -o r.h5 > out.txt 2> err.txt ||
     fail "df: $(cat err.txt)"
+  # The run says its threads first: 2 blocks run on one thread, whatever OMP_NUM_THREADS says.
+  [ "$(head -1 out.txt)" = "DF: 2 blocks on 1 thread" ] || fail "first line '$(head -1 out.txt)'"
   grep -qE "^DF: [0-9]+ steps to t = 1 s" out.txt || fail "no closing line: $(cat out.txt)"
   check_progress_lines err.txt time 1 || fail "progress lines: $(cat err.txt)"
   # A run to a step count says it as step N/STEPS.
@@ -330,11 +332,12 @@ case_df_progress_lines() {
   # -q: nothing but errors, progress included.
   DDA_PROGRESS_SECONDS=0.01 "$DDA" df fine.yaml --blocks blocks.h5 -o q.h5 -q > out.txt 2> err.txt || fail "df -q"
   [ ! -s out.txt ] && [ ! -s err.txt ] || fail "-q printed: $(cat out.txt err.txt)"
-  # 3D: the same lines.
+  # 3D: the same lines, the same one thread for two blocks.
   sed 's/dt: 0.001,/dt: 0.0001,/' "$SRC/tests/data/df3_incline.yaml" > fine3.yaml
   "$DDA" dl fine3.yaml -o fractures.h5 -q && "$DDA" dc fractures.h5 -o blocks3d.h5 -q || fail "dl, dc 3D"
-  DDA_PROGRESS_SECONDS=0.01 "$DDA" df fine3.yaml --blocks blocks3d.h5 -o r3.h5 > out.txt 2> err.txt ||
+  DDA_PROGRESS_SECONDS=0.01 OMP_NUM_THREADS=2 "$DDA" df fine3.yaml --blocks blocks3d.h5 -o r3.h5 > out.txt 2> err.txt ||
     fail "df 3D: $(cat err.txt)"
+  [ "$(head -1 out.txt)" = "DF: 2 blocks on 1 thread" ] || fail "3D first line '$(head -1 out.txt)'"
   check_progress_lines err.txt time 1 || fail "3D progress lines: $(cat err.txt)"
 }
 

@@ -19,6 +19,7 @@
 #include "dda/df/results.hpp"
 #include "pipeline.hpp"
 #include "dda/df/run_loop.hpp"
+#include "dda/df/run_threads.hpp"
 #include "dda/df/runaway.hpp"
 
 namespace dda::cli {
@@ -129,7 +130,8 @@ void adopt_saved(Results& results, Results& saved, const std::string& path, cons
 }
 
 // A prepared forward run, 2D or 3D alike, with everything `dda df` does
-// around it: checkpoints on the output options' schedule, a ParaView frame
+// around it: the threads for the model's size (df::RunThreads, said in the
+// run's first line), checkpoints on the output options' schedule, a ParaView frame
 // (write_frame(sim, blocks_file, contacts_file or "")) at every saved frame,
 // the progress bar, a clean stop on Ctrl-C, the runaway sentence and the
 // closing one. The dimension's run_recorded and run_progress are found by
@@ -137,6 +139,10 @@ void adopt_saved(Results& results, Results& saved, const std::string& path, cons
 template <class Sim, class Results, class WriteFrame>
 void run_session(Sim& sim, Results& results, const OutputOptions& output, const DfStage& stage,
                  WriteFrame write_frame) {
+  const int blocks = static_cast<int>(sim.blocks().size());
+  const df::RunThreads threads(blocks);
+  say(stage.quiet, "DF: " + std::to_string(blocks) + " blocks on " + std::to_string(threads.threads()) +
+                       (threads.threads() == 1 ? " thread\n" : " threads\n"));
   df::BasicRunControl<Sim> rc;
   rc.checkpoint_seconds = output.checkpoint_seconds;
   rc.checkpoint_steps = output.checkpoint_steps;
