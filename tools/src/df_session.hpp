@@ -39,7 +39,7 @@ struct ProgressSample {
 // Progress on stderr, nothing when quiet. On a terminal a bar redrawn in
 // place; otherwise (a log file, a pipe, a batch job) a line at least every
 // `interval` seconds of wall time:
-//   DF:  12 %  step 1200  t = 0.6/5 s  dt = 0.0005 s  3.2 solves/step  1m30s elapsed  ETA 11m02s
+//   DF: 12 %  step 1200  t = 0.6/5 s  dt = 0.0005 s  3.2 solves/step  1m30s elapsed  ETA 11m02s
 // with the solves per step averaged over the steps since the last line.
 // The lines come from a helper thread that sleeps in between, so a step
 // longer than the interval still gets its line ("step 1201 under way for
