@@ -274,6 +274,73 @@ case_df_resume_reproduces() {
     fail "dda info shows no warning for created energy: $("$DDA" info poked.h5)"
 }
 
+# check_progress_lines FILE time|steps TOTAL: the lines `dda df` prints on
+# a non-terminal (here a file) are each
+#   DF: P %  step N[/STEPS]  t = T[/TOTAL] s  dt = DT s  S solves/step  E elapsed  ETA L
+# (or "step N under way for E" in place of the solves when no step ended
+# since the last line), with steps and times that only grow, a step no
+# longer than the scenario's dt (1e-4 s), at least one solve a step, and
+# the percentage of t / TOTAL or N / STEPS.
+check_progress_lines() {
+  /usr/bin/python3 - "$@" <<'PY'
+import re, sys
+lines = [l.rstrip("\n") for l in open(sys.argv[1]) if l.startswith("DF: ") and "%" in l]
+assert len(lines) >= 2, "fewer than two progress lines: %r" % lines
+by_steps, total = sys.argv[2] == "steps", sys.argv[3]
+of_steps, of_time = ("/" + total, "") if by_steps else ("", "/" + total)
+dur = r"(?:\d+h\d\dm|\d+m\d\ds|\d+s)"
+pat = re.compile(r"DF: (\d+) %%  step (\d+)%s  t = ([0-9.e+-]+)%s s  dt = ([0-9.e+-]+) s  "
+                 r"(?:(\d+\.\d) solves/step|step (\d+)%s under way for %s)  %s elapsed  ETA (?:%s|\?)$"
+                 % (of_steps, of_time, of_steps, dur, dur, dur))
+last_step, last_t, paced = -1, -1.0, 0
+for l in lines:
+    m = pat.match(l)
+    assert m, "progress line %r does not match %s" % (l, pat.pattern)
+    pct, step, t, dt, solves, running = m.groups()
+    step, t, dt = int(step), float(t), float(dt)
+    assert step >= last_step and t >= last_t, "steps or times go back: %r" % l
+    done = step / float(total) if by_steps else t / float(total)
+    assert abs(int(pct) - 100 * done) <= 1, "percentage %s for %r" % (pct, l)
+    if step > 0: assert 0 < dt <= 1e-4 * (1 + 1e-9), "dt %g in %r" % (dt, l)
+    if solves is not None:
+        assert float(solves) >= 1, "fewer than one solve a step: %r" % l
+        paced += 1
+    else:
+        assert int(running) == step + 1, l
+    last_step, last_t = step, t
+assert paced >= 1, "no line reports solves per step: %r" % lines
+print("%d progress lines, the last: %s" % (len(lines), lines[-1]))
+PY
+}
+
+case_df_progress_lines() {
+  write_incline
+  "$DDA" dl incline.yaml -o lines.h5 -q && "$DDA" dc lines.h5 -o blocks.h5 -q || fail "dl, dc"
+  # 10 000 steps of 0.1 ms, output going to files (not a terminal): with
+  # DDA_PROGRESS_SECONDS=0.01 a progress line every 0.02 s on stderr.
+  sed 's/dt: 0.001,/dt: 0.0001,/' incline.yaml > fine.yaml
+  DDA_PROGRESS_SECONDS=0.01 OMP_NUM_THREADS=2 "$DDA" df fine.yaml --blocks blocks.h5 -o r.h5 > out.txt 2> err.txt ||
+    fail "df: $(cat err.txt)"
+  # The run says its threads first: 2 blocks run on one thread, whatever OMP_NUM_THREADS says.
+  [ "$(head -1 out.txt)" = "DF: 2 blocks on 1 thread" ] || fail "first line '$(head -1 out.txt)'"
+  grep -qE "^DF: [0-9]+ steps to t = 1 s" out.txt || fail "no closing line: $(cat out.txt)"
+  check_progress_lines err.txt time 1 || fail "progress lines: $(cat err.txt)"
+  # A run to a step count says it as step N/STEPS.
+  sed 's/dt: 0.001, total_time: 1.0, output_interval: 0.25/dt: 0.0001, steps: 10000/' incline.yaml > steps.yaml
+  DDA_PROGRESS_SECONDS=0.01 "$DDA" df steps.yaml --blocks blocks.h5 -o s.h5 2> err.txt > /dev/null || fail "df steps"
+  check_progress_lines err.txt steps 10000 || fail "progress lines of a run by steps: $(cat err.txt)"
+  # -q: nothing but errors, progress included.
+  DDA_PROGRESS_SECONDS=0.01 "$DDA" df fine.yaml --blocks blocks.h5 -o q.h5 -q > out.txt 2> err.txt || fail "df -q"
+  [ ! -s out.txt ] && [ ! -s err.txt ] || fail "-q printed: $(cat out.txt err.txt)"
+  # 3D: the same lines, the same one thread for two blocks.
+  sed 's/dt: 0.001,/dt: 0.0001,/' "$SRC/tests/data/df3_incline.yaml" > fine3.yaml
+  "$DDA" dl fine3.yaml -o fractures.h5 -q && "$DDA" dc fractures.h5 -o blocks3d.h5 -q || fail "dl, dc 3D"
+  DDA_PROGRESS_SECONDS=0.01 OMP_NUM_THREADS=2 "$DDA" df fine3.yaml --blocks blocks3d.h5 -o r3.h5 > out.txt 2> err.txt ||
+    fail "df 3D: $(cat err.txt)"
+  [ "$(head -1 out.txt)" = "DF: 2 blocks on 1 thread" ] || fail "3D first line '$(head -1 out.txt)'"
+  check_progress_lines err.txt time 1 || fail "3D progress lines: $(cat err.txt)"
+}
+
 case_df_history_columns() {
   write_incline
   "$DDA" run incline.yaml -o out -q --no-vtk || fail "run"

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <sstream>
 
@@ -42,46 +43,117 @@ std::string num(double v) {
   return s.str();
 }
 
-Progress::Progress(bool quiet, double start_fraction)
-    : enabled_(!quiet), tty_(isatty(STDERR_FILENO) == 1), start_(Clock::now()), f0_(start_fraction) {
-  next_decile_ = std::floor(start_fraction * 10) + 1;
+namespace {
+
+// "t = 0.5/2 s" for a run of total_time seconds, else "t = 0.5 s" (the step
+// count goes with the step number).
+std::string model_time(const ProgressSample& s) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g", s.time);
+  return "t = " + std::string(buf) + (s.total_time > 0 ? "/" + num(s.total_time) : std::string()) + " s";
 }
 
-void Progress::update(double f, const std::string& where, int step) {
+std::string step_of(int step, const ProgressSample& s) {
+  return "step " + std::to_string(step) + (s.total_time > 0 ? std::string() : "/" + std::to_string(s.steps));
+}
+
+// Whole percent, a run at t = 0.99999999 of 1 s included.
+int percent_done(double f) { return static_cast<int>(f * 100 + 1e-6); }
+
+}  // namespace
+
+double Progress::progress_interval() {
+  if (const char* v = std::getenv("DDA_PROGRESS_SECONDS")) {
+    char* end = nullptr;
+    const double s = std::strtod(v, &end);
+    if (end != v && *end == '\0' && s > 0 && std::isfinite(s)) return s;
+  }
+  return 30;
+}
+
+Progress::Progress(bool quiet, const ProgressSample& start, double interval)
+    : enabled_(!quiet),
+      tty_(isatty(STDERR_FILENO) == 1),
+      start_(Clock::now()),
+      last_line_(start_),
+      last_step_at_(start_),
+      f0_(start.fraction),
+      interval_(interval),
+      now_(start),
+      at_line_(start) {
+  if (enabled_ && !tty_) thread_ = std::thread([this] { heartbeat(); });
+}
+
+void Progress::update(const ProgressSample& s) {
   if (!enabled_) return;
   const auto now = Clock::now();
+  if (!tty_) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    if (s.step != now_.step) last_step_at_ = now;
+    now_ = s;
+    return;
+  }
+  const double f = s.fraction;
+  if (seconds(now - last_draw_) < 0.2 && f < 1) return;
+  last_draw_ = now;
   const double elapsed = seconds(now - start_);
   const double left = f > f0_ ? elapsed * (1 - f) / (f - f0_) : NAN;
-  if (tty_) {
-    if (seconds(now - last_draw_) < 0.2 && f < 1) return;
-    last_draw_ = now;
-    const int width = 30, filled = static_cast<int>(f * width);
-    std::string bar(static_cast<std::size_t>(filled), '#');
-    bar.resize(width, '-');
-    std::fprintf(stderr, "\rDF [%s] %3d%%  %s  step %d  %s left   ", bar.c_str(), static_cast<int>(f * 100),
-                 where.c_str(), step, duration(left).c_str());
+  const int width = 30, filled = static_cast<int>(f * width);
+  std::string bar(static_cast<std::size_t>(filled), '#');
+  bar.resize(width, '-');
+  const std::string where = s.total_time > 0 ? model_time(s) : step_of(s.step, s);
+  std::fprintf(stderr, "\rDF [%s] %3d%%  %s  step %d  %s left   ", bar.c_str(), percent_done(f),
+               where.c_str(), s.step, duration(left).c_str());
+  std::fflush(stderr);
+  drawn_ = true;
+}
+
+std::string Progress::line(Clock::time_point now) {
+  const double f = now_.fraction;
+  const double elapsed = seconds(now - start_);
+  const double left = f > f0_ ? elapsed * (1 - f) / (f - f0_) : NAN;
+  char dt[32], pace[64];
+  std::snprintf(dt, sizeof dt, "%.4g", now_.dt);
+  std::string text = "DF: " + std::to_string(percent_done(f)) + " %  " + step_of(now_.step, now_) + "  " +
+                     model_time(now_) + "  dt = " + dt + " s  ";
+  if (now_.step > at_line_.step) {
+    std::snprintf(pace, sizeof pace, "%.1f solves/step",
+                  static_cast<double>(now_.solves - at_line_.solves) / (now_.step - at_line_.step));
+    text += pace;
+  } else {
+    text += step_of(now_.step + 1, now_) + " under way for " + duration(seconds(now - last_step_at_));
+  }
+  return text + "  " + duration(elapsed) + " elapsed  ETA " + duration(left) + "\n";
+}
+
+void Progress::heartbeat() {
+  std::unique_lock<std::mutex> lock(mutex_);
+  for (;;) {
+    const auto due = last_line_ + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(interval_));
+    if (wake_.wait_until(lock, due, [this] { return stop_; })) return;
+    const auto now = Clock::now();
+    if (now < due) continue;
+    last_line_ = now;
+    // At the end the run writes its results and says so itself.
+    if (now_.finished && now_.step == at_line_.step) continue;
+    const std::string text = line(now);
+    std::fputs(text.c_str(), stderr);
     std::fflush(stderr);
-    drawn_ = true;
-  } else if (f * 10 >= next_decile_) {
-    next_decile_ = std::floor(f * 10) + 1;
-    if (elapsed < 1.0) return;
-    std::fprintf(stderr, "DF: %3d%%  %s  step %d  %s elapsed, about %s left\n", static_cast<int>(f * 100),
-                 where.c_str(), step, duration(elapsed).c_str(), duration(left).c_str());
+    at_line_ = now_;
   }
 }
 
 void Progress::finish() {
+  if (thread_.joinable()) {
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      stop_ = true;
+    }
+    wake_.notify_all();
+    thread_.join();
+  }
   if (drawn_) std::fprintf(stderr, "\n");
   drawn_ = false;
-}
-
-std::string progress_where(double time, double total_time, int step, int steps) {
-  if (total_time > 0) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.3g", time);
-    return "t = " + std::string(buf) + "/" + num(total_time) + " s";
-  }
-  return "step " + std::to_string(step) + "/" + std::to_string(steps);
 }
 
 InterruptGuard::InterruptGuard() {

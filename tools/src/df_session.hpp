@@ -3,11 +3,14 @@
 // (cmd_df3.cpp) alike: the progress bar, Ctrl-C / SIGTERM as a clean stop,
 // the ParaView series, and the sentences that end a run.
 #include <chrono>
+#include <condition_variable>
 #include <csignal>
 #include <cstdint>
 #include <filesystem>
 #include <iostream>
+#include <mutex>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "commands.hpp"
@@ -16,32 +19,58 @@
 #include "dda/df/results.hpp"
 #include "pipeline.hpp"
 #include "dda/df/run_loop.hpp"
+#include "dda/df/run_threads.hpp"
 #include "dda/df/runaway.hpp"
 
 namespace dda::cli {
 
-// Progress on stderr: a bar redrawn in place on a terminal, a line every 10 %
-// otherwise (once the run has taken more than a second), nothing when quiet.
+// What the end of a step tells the progress report.
+struct ProgressSample {
+  double fraction = 0;     // of the run done, 0..1
+  int step = 0;            // the step just done (0 before the first)
+  double time = 0;         // s of model time at its end
+  double dt = 0;           // s, its length
+  long solves = 0;         // linear solves since the run (or the resume) began
+  double total_time = 0;   // s, the run's end in model time (0: it ends at a step count)
+  int steps = 0;           // that step count
+  bool finished = false;   // the run has reached its end
+};
+
+// Progress on stderr, nothing when quiet. On a terminal a bar redrawn in
+// place; otherwise (a log file, a pipe, a batch job) a line at least every
+// `interval` seconds of wall time:
+//   DF: 12 %  step 1200  t = 0.6/5 s  dt = 0.0005 s  3.2 solves/step  1m30s elapsed  ETA 11m02s
+// with the solves per step averaged over the steps since the last line.
+// The lines come from a helper thread that sleeps in between, so a step
+// longer than the interval still gets its line ("step 1201 under way for
+// 45s" in place of the solves).
 class Progress {
  public:
-  Progress(bool quiet, double start_fraction);
+  // `start`: where the run (or the resumed run) begins.
+  Progress(bool quiet, const ProgressSample& start, double interval = progress_interval());
   ~Progress() { finish(); }
-  // `fraction` of the run done (0..1), at the end of step `step`; `where`
-  // says it in model terms ("t = 0.5/2 s" or "step 30/100").
-  void update(double fraction, const std::string& where, int step);
+  Progress(const Progress&) = delete;
+  Progress& operator=(const Progress&) = delete;
+  void update(const ProgressSample& s);
   void finish();
+
+  // DDA_PROGRESS_SECONDS if it is a positive number, else 30.
+  static double progress_interval();
 
  private:
   using Clock = std::chrono::steady_clock;
+  void heartbeat();
+  std::string line(Clock::time_point now);  // holding mutex_
   bool enabled_, tty_;
-  Clock::time_point start_, last_draw_{};
-  double f0_;
-  double next_decile_ = 1;
+  Clock::time_point start_, last_draw_{}, last_line_, last_step_at_;
+  double f0_, interval_;
   bool drawn_ = false;
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  bool stop_ = false;
+  ProgressSample now_, at_line_;  // the last step, and the last step at the last line
+  std::thread thread_;
 };
-
-// "t = 0.5/2 s" for a run of total_time seconds, else "step 30/100".
-std::string progress_where(double time, double total_time, int step, int steps);
 
 // SIGINT and SIGTERM set a flag (a clean stop at the end of the step) while
 // this lives; the previous handlers come back after.
@@ -101,7 +130,8 @@ void adopt_saved(Results& results, Results& saved, const std::string& path, cons
 }
 
 // A prepared forward run, 2D or 3D alike, with everything `dda df` does
-// around it: checkpoints on the output options' schedule, a ParaView frame
+// around it: the threads for the model's size (df::RunThreads, said in the
+// run's first line), checkpoints on the output options' schedule, a ParaView frame
 // (write_frame(sim, blocks_file, contacts_file or "")) at every saved frame,
 // the progress bar, a clean stop on Ctrl-C, the runaway sentence and the
 // closing one. The dimension's run_recorded and run_progress are found by
@@ -109,6 +139,10 @@ void adopt_saved(Results& results, Results& saved, const std::string& path, cons
 template <class Sim, class Results, class WriteFrame>
 void run_session(Sim& sim, Results& results, const OutputOptions& output, const DfStage& stage,
                  WriteFrame write_frame) {
+  const int blocks = static_cast<int>(sim.blocks().size());
+  const df::RunThreads threads(blocks);
+  say(stage.quiet, "DF: " + std::to_string(blocks) + " blocks on " + std::to_string(threads.threads()) +
+                       (threads.threads() == 1 ? " thread\n" : " threads\n"));
   df::BasicRunControl<Sim> rc;
   rc.checkpoint_seconds = output.checkpoint_seconds;
   rc.checkpoint_steps = output.checkpoint_steps;
@@ -125,11 +159,23 @@ void run_session(Sim& sim, Results& results, const OutputOptions& output, const 
       write_pvd_series(vtk, times, contacts);
     };
   }
-  Progress progress(stage.quiet, run_progress(sim));
-  rc.on_step = [&progress](const Sim& s) {
-    const int step = s.log().empty() ? 0 : s.log().back().step;
-    const auto& c = s.model().control;
-    progress.update(run_progress(s), progress_where(s.time(), c.total_time, step, c.steps), step);
+  const auto& control = sim.model().control;
+  ProgressSample start;
+  start.fraction = run_progress(sim);
+  start.step = sim.log().empty() ? 0 : sim.log().back().step;
+  start.time = sim.time();
+  start.total_time = control.total_time;
+  start.steps = control.steps;
+  start.solves = sim.timings().solves;
+  Progress progress(stage.quiet, start);
+  rc.on_step = [&progress, start](const Sim& s) {
+    ProgressSample p = start;
+    p.fraction = run_progress(s);
+    if (!s.log().empty()) p.step = s.log().back().step, p.dt = s.log().back().dt;
+    p.time = s.time();
+    p.solves = s.timings().solves;
+    p.finished = run_finished(s);
+    progress.update(p);
   };
   df::RunEnd end;
   {

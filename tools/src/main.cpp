@@ -4,6 +4,7 @@
 // stderr naming the file, key or line); 2 for a command-line usage error;
 // 3 for an internal error (a bug: please report it).
 #include <CLI/CLI.hpp>
+#include <cstdlib>
 #include <exception>
 #include <iostream>
 
@@ -11,6 +12,22 @@
 #include "dda/common/memory_policy.hpp"
 #include "dda/common/error.hpp"
 #include "dda/common/provenance.hpp"
+
+namespace {
+
+// OpenMP threads that wait for work sleep instead of spinning, unless the
+// user chose (OMP_WAIT_POLICY, or libgomp's GOMP_SPINCOUNT). libgomp reads
+// its environment once, when it is loaded, before main(); an entry in
+// .preinit_array runs before any shared library's initialisation, so the
+// choice is made there. Why passive: docs/solver2d.md, "Threads for small
+// models".
+void prefer_passive_waiting(int, char**, char**) {
+  if (!std::getenv("OMP_WAIT_POLICY") && !std::getenv("GOMP_SPINCOUNT")) setenv("OMP_WAIT_POLICY", "PASSIVE", 0);
+}
+[[gnu::section(".preinit_array"), gnu::used]] void (*const preinit_passive_waiting)(int, char**, char**) =
+    prefer_passive_waiting;
+
+}  // namespace
 
 int main(int argc, char** argv) {
   dda::keep_freed_memory();  // memory_policy.hpp: large buffers are re-allocated every iterate
