@@ -433,17 +433,18 @@ TEST(Sliding3d, DipShakingAgreesWithSecondIntegrator) {
   EXPECT_LT(fine.path, 1e-5);
 }
 
-// Two horizontal components (a record, east and north, as ground
-// acceleration) on a plane 25/130: neither along the dip nor the strike.
-TEST(Sliding3d, TwoComponentRecordAgreesWithSecondIntegrator) {
-  const auto rec = record3(0.0);
+// A record (east and north, and `vertical` times a vertical component, as
+// ground acceleration) on a plane 25/130: neither along the dip nor the
+// strike. `label` names the case in the printout.
+void record_agrees_with_second_integrator(double vertical, const char* label) {
+  const auto rec = record3(vertical);
   const SlidingModel model = single(25, 130, 32, excitation_from_record(rec, InputMeaning::ground));
   const second::Motion ref = second::slide(model, 1e-4, 6.0, every_tenth(6.0), rec->t);
   EXPECT_FALSE(ref.lifted);
   EXPECT_GT(ref.starts, 3);
   const Gap coarse = gap(model, 1e-4, 6.0, ref);
   const Gap fine = gap(model, 1e-5, 6.0, ref);
-  std::printf("two components: |D| = %.7f m, %d starts, path / end gap %.2e / %.2e at dt 1e-4, %.2e / %.2e at 1e-5\n",
+  std::printf("%s: |D| = %.7f m, %d starts, path / end gap %.2e / %.2e at dt 1e-4, %.2e / %.2e at 1e-5\n", label,
               ref.u.norm(), ref.starts, coarse.path, coarse.end, fine.path, fine.end);
   EXPECT_LT(coarse.path, 3e-4);
   EXPECT_LT(coarse.end, 3e-4);
@@ -451,20 +452,13 @@ TEST(Sliding3d, TwoComponentRecordAgreesWithSecondIntegrator) {
   EXPECT_LT(fine.end, 3e-5);
 }
 
+// Two horizontal components.
+TEST(Sliding3d, TwoComponentRecordAgreesWithSecondIntegrator) {
+  record_agrees_with_second_integrator(0.0, "two components");
+}
+
 // Three components: the vertical one changes the normal reaction, hence the
 // friction capacity, all the time.
 TEST(Sliding3d, ThreeComponentRecordAgreesWithSecondIntegrator) {
-  const auto rec = record3(0.3);
-  const SlidingModel model = single(25, 130, 32, excitation_from_record(rec, InputMeaning::ground));
-  const second::Motion ref = second::slide(model, 1e-4, 6.0, every_tenth(6.0), rec->t);
-  EXPECT_FALSE(ref.lifted);
-  EXPECT_GT(ref.starts, 3);
-  const Gap coarse = gap(model, 1e-4, 6.0, ref);
-  const Gap fine = gap(model, 1e-5, 6.0, ref);
-  std::printf("three components: |D| = %.7f m, %d starts, path / end gap %.2e / %.2e at dt 1e-4, %.2e / %.2e at 1e-5\n",
-              ref.u.norm(), ref.starts, coarse.path, coarse.end, fine.path, fine.end);
-  EXPECT_LT(coarse.path, 3e-4);
-  EXPECT_LT(coarse.end, 3e-4);
-  EXPECT_LT(fine.path, 3e-5);
-  EXPECT_LT(fine.end, 3e-5);
+  record_agrees_with_second_integrator(0.3, "three components");
 }
