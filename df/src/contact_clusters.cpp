@@ -98,7 +98,13 @@ bool Simulation::settle_clusters(double dt, std::vector<Contact>& contacts, Eige
       const LocalSolveResult s = solve_on_blocks(system_, cluster, r, x, kLocalTolerance, kMaxLocalIterations);
       ++timings_.local_solves;
       timings_.local_iterations += s.iterations;
-      if (!s.converged) return false;
+      if (!s.converged) {
+        // K and F already hold the last update's changes (reassembled
+        // above): the caller must not swap them in a second time.
+        std::fill(sc.revisit.begin(), sc.revisit.end(), 0);
+        sc.changed = 0;
+        return false;
+      }
       for (const int b : cluster) {
         d.segment<kDofs>(kDofs * b) += x.segment<kDofs>(kDofs * b);
         x.segment<kDofs>(kDofs * b).setZero();
