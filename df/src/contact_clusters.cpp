@@ -66,11 +66,11 @@ bool Simulation::settle_clusters(double dt, std::vector<Contact>& contacts, Eige
   auto add_block = [&](int b) {
     if (!in_cluster[b]) in_cluster[b] = 1, cluster.push_back(b);
   };
-  // The blocks of the unsettled contacts and their neighbours.
+  // The blocks of the unsettled contacts (`seeds`) and their neighbours.
+  std::vector<int> seeds;
+  for (std::size_t k = 0; k < nc; ++k)
+    if (sc.unsettled[k]) seeds.push_back(contacts[k].vblock), seeds.push_back(contacts[k].eblock);
   auto grow = [&]() {
-    std::vector<int> seeds;
-    for (std::size_t k = 0; k < nc; ++k)
-      if (sc.unsettled[k]) seeds.push_back(contacts[k].vblock), seeds.push_back(contacts[k].eblock);
     for (const int b : seeds) {
       add_block(b);
       for (int e = first[b]; e < first[b + 1]; ++e) {
@@ -78,12 +78,15 @@ bool Simulation::settle_clusters(double dt, std::vector<Contact>& contacts, Eige
         add_block(c.vblock == b ? c.eblock : c.vblock);
       }
     }
+    seeds.clear();
     return cluster.size() <= limit;
   };
   if (!grow()) return false;
 
   Eigen::VectorXd r = Eigen::VectorXd::Zero(d.size()), x = Eigen::VectorXd::Zero(d.size());
-  std::vector<std::uint8_t> touched(nc, 0);
+  // Round in which each contact was last listed among the cluster's (a
+  // stamp, so that no pass over every contact is made per round).
+  std::vector<int> listed(nc, -1), of_cluster;
   for (int round = 0; round < kMaxRounds; ++round) {
     {
       // K and F of the states the last update left (only the contacts it
@@ -91,6 +94,11 @@ bool Simulation::settle_clusters(double dt, std::vector<Contact>& contacts, Eige
       const ScopedTimer timer(timings_.assembly);
       reassemble(dt, contacts, sc, friction);
     }
+    // Those flags are spent: from here on only the cluster's contacts are
+    // updated, and every other contact keeps its state and forces (not
+    // revisited). One pass, after the global update's flags.
+    if (round == 0)
+      for (std::size_t k = 0; k < nc; ++k) sc.is_changed[k] = sc.revisit[k] = sc.unsettled[k] = 0;
     {
       const ScopedTimer timer(timings_.solve);
       for (const int b : cluster)
@@ -100,8 +108,7 @@ bool Simulation::settle_clusters(double dt, std::vector<Contact>& contacts, Eige
       timings_.local_iterations += s.iterations;
       if (!s.converged) {
         // K and F already hold the last update's changes (reassembled
-        // above): the caller must not swap them in a second time.
-        std::fill(sc.revisit.begin(), sc.revisit.end(), 0);
+        // above, their flags cleared): nothing to swap in a second time.
         sc.changed = 0;
         return false;
       }
@@ -110,21 +117,22 @@ bool Simulation::settle_clusters(double dt, std::vector<Contact>& contacts, Eige
         x.segment<kDofs>(kDofs * b).setZero();
       }
     }
-    // The contacts of the cluster's blocks from the corrected d; every
-    // other contact keeps its state and forces (not revisited).
+    // The contacts of the cluster's blocks from the corrected d, in
+    // contact order (the order the global update takes them in).
     const ScopedTimer timer(timings_.contact_update);
-    std::fill(touched.begin(), touched.end(), 0);
+    of_cluster.clear();
     for (const int b : cluster)
-      for (int e = first[b]; e < first[b + 1]; ++e) touched[of_block[e]] = 1;
+      for (int e = first[b]; e < first[b + 1]; ++e)
+        if (listed[of_block[e]] != round) listed[of_block[e]] = round, of_cluster.push_back(of_block[e]);
+    std::sort(of_cluster.begin(), of_cluster.end());
     bool unsettled = false;
     long moved = 0;
-    for (std::size_t k = 0; k < nc; ++k) {
-      if (!touched[k]) {
-        sc.is_changed[k] = sc.revisit[k] = sc.unsettled[k] = 0;
-        continue;
-      }
+    for (const int k : of_cluster) {
       const ContactUpdate u = update_one(k, contacts, d, dt, changes);
-      unsettled = unsettled || u.flipped || u.lags;
+      if (u.flipped || u.lags) {
+        unsettled = true;
+        seeds.push_back(contacts[k].vblock), seeds.push_back(contacts[k].eblock);
+      }
       moved += u.moved;
       ++timings_.contact_updates;
     }
