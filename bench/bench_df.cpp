@@ -120,6 +120,7 @@ int g_clusters = -1;  // control.contact_clusters of --scenario models (--cluste
 
 void time_steps(benchmark::State& state, Simulation& sim) {
   try {
+    sim.start();  // the start-up relaxation (initial_equilibrium) is not a step: not counted
     for (int s = 0; s < g_skip_steps; ++s) sim.step();
   } catch (const std::exception& e) {
     state.SkipWithError(e.what());

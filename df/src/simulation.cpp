@@ -62,7 +62,7 @@ void Simulation::run_until(double t) {
 
 ContactLaw Simulation::law_of(const Contact& c) const {
   return {model_.joint_pn[c.joint], model_.joint_ps[c.joint], model_.joints[c.joint].tensile_strength,
-          settling_ ? stuck_friction() : friction_[c.joint].get(), model_.contact_tolerance};
+          settling_stuck_ ? stuck_friction() : friction_[c.joint].get(), model_.contact_tolerance};
 }
 
 int Simulation::joint_of(int vblock, int vertex, int eblock, int edge) const {

@@ -40,6 +40,7 @@ WallRun run_wall(int rows, int cols, bool clusters, int steps) {
   const int top = 1 + (rows - 1) * cols + cols / 2;
   in.measurements.push_back({"top", in.geometry.blocks[top].vertices[0] + Vec2(0.5, 0.25), top});
   Simulation sim(build_model(std::move(in)));
+  sim.start();
   const StepTimings t0 = sim.timings();  // the relaxation before t = 0 is not counted
   for (int s = 0; s < steps; ++s) sim.step();
   const StepTimings& t1 = sim.timings();
@@ -51,17 +52,22 @@ WallRun run_wall(int rows, int cols, bool clusters, int steps) {
 }
 
 // The count: a 400-brick wall averages at most 3 solves of the
-// whole system a step. Without clusters the same wall takes 5.3, so the
-// bound is one the global iteration alone does not meet; the test checks
-// that too, so that it fails if the clusters stop doing their work. (200 steps: 2.79 with, 5.29 without when
-// written; the walls of bench/brick_wall.sh give the same counts.)
+// whole system a step. Since the start-up relaxation hands the wall over in
+// frictional equilibrium (settle.cpp, phase 2) the global iteration alone
+// meets it too (2.78; 5.29 when the wall started with every contact stuck),
+// and the clusters take a third off that: the test checks both, and that
+// the clusters save at least a fifth, so that it fails if they stop doing
+// their work. (200 steps: 1.73 global + 0.78 cluster solves with, 2.78
+// without, when written; the walls of bench/brick_wall.sh give the same
+// counts.)
 TEST(ContactClusters, FourHundredBrickWallAveragesAtMostThreeSolvesAStep) {
   const WallRun with = run_wall(20, 20, true, 200);
   const WallRun without = run_wall(20, 20, false, 200);
   std::printf("400-brick wall, 200 steps: %.2f global + %.2f cluster solves a step with clusters, %.2f without\n",
               with.solves_per_step, with.cluster_solves_per_step, without.solves_per_step);
   EXPECT_LE(with.solves_per_step, 3.0);
-  EXPECT_GT(without.solves_per_step, 4.0);
+  EXPECT_LE(without.solves_per_step, 3.0);
+  EXPECT_LT(with.solves_per_step, 0.8 * without.solves_per_step);
   // The same wall either way: both end every step with every contact
   // checked against a full global solve. The top brick settles 0.2 mm under
   // the wall's weight; the two runs take other iterates, so they agree to

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <condition_variable>
 #include <csignal>
+#include <cstdlib>
 #include <cstdint>
 #include <filesystem>
 #include <iostream>
@@ -143,6 +144,23 @@ void run_session(Sim& sim, Results& results, const OutputOptions& output, const 
   const df::RunThreads threads(blocks);
   say(stage.quiet, "DF: " + std::to_string(blocks) + " blocks on " + std::to_string(threads.threads()) +
                        (threads.threads() == 1 ? " thread\n" : " threads\n"));
+  if constexpr (requires { sim.start_up(); }) {
+    // The start-up relaxation runs before frame 0, so that the first frame
+    // is the state the run starts from.
+    sim.start();
+    const auto& s = sim.start_up();
+    const std::string stuck = std::to_string(std::abs(s.stuck_iterations)) + " static solves with the contacts stuck";
+    if (s.stuck_iterations < 0)
+      say(stage.quiet, "DF: initial equilibrium: none after " + stuck +
+                           " (a block falls, topples or keeps moving); the run starts from the last static state\n");
+    else if (s.stuck_iterations > 0)
+      say(stage.quiet, "DF: initial equilibrium: " + stuck + ", " + std::to_string(std::abs(s.friction_iterations)) +
+                           " with friction; " +
+                           (s.frictional_equilibrium
+                                ? "the run starts at rest in frictional equilibrium\n"
+                                : "no frictional equilibrium (something keeps sliding): the run starts from the "
+                                  "last static state\n"));
+  }
   df::BasicRunControl<Sim> rc;
   rc.checkpoint_seconds = output.checkpoint_seconds;
   rc.checkpoint_steps = output.checkpoint_steps;

@@ -133,6 +133,20 @@ class Simulation {
   const std::vector<EnergyRecord>& energy_log() const { return energy_log_; }
   // Settling iterations spent on Control::initial_equilibrium (settle.cpp).
   int settle_iterations() const { return settle_iterations_; }
+  // The start-up relaxation of Control::initial_equilibrium, phase by phase
+  // (settle.cpp): static solves with every closed contact stuck, then with
+  // the friction laws, and whether that second phase found a frictional
+  // equilibrium (false: it was undone, the run starts from phase 1's state).
+  struct StartUp {
+    int stuck_iterations = 0, friction_iterations = 0;
+    bool frictional_equilibrium = false;
+  };
+  const StartUp& start_up() const { return start_up_; }
+  // Runs the start-up relaxation now if it has not run (the first step
+  // otherwise does), so that a caller can count or report it apart.
+  void start() {
+    if (!started_) settle();
+  }
 
  private:
   const StepRecord& advance(double max_dt);
@@ -225,6 +239,9 @@ class Simulation {
   // the current state into e; `contacts` holds the terms of contacts_.
   void store_energy(EnergyRecord& e, const std::vector<ContactEnergy>& contacts) const;
   void settle();
+  // One phase of settle(): static pseudo-steps until no vertex moves more
+  // than the tolerance; true when it got there.
+  int relax(bool contacts_stick);  // solves spent; negative: did not get there
   void check_runaway(const Eigen::VectorXd& d, double moved, double dt, bool at_min_dt) const;
   // Dashpot matrix of a viscous boundary edge in the current configuration,
   // and the traction from outside on it during the step [time_, time_ + dt].
@@ -277,8 +294,10 @@ class Simulation {
   std::vector<EnergyRecord> energy_log_;
   EnergyRecord energy_start_;          // stored energy at t = 0 (in the stored fields)
   bool started_ = false;               // settle() has run (or was not asked for)
-  bool settling_ = false;              // contacts stick while settling
+  bool settling_ = false;              // before t = 0, relaxing statically (settle.cpp)
+  bool settling_stuck_ = false;        // and every closed contact sticks (its first phase)
   int settle_iterations_ = 0;
+  StartUp start_up_;
 };
 
 }  // namespace dda::df
