@@ -5,8 +5,8 @@
 //
 // Stored energy: kinetic (of the velocities the next step starts from),
 // elastic (block strain energy S/2 sigma^T E^-1 sigma), contact (penalty
-// springs of closed contacts, N^2 / 2 pn, plus the shear springs of locked
-// ones, S^2 / 2 ps), fixed (fixed-point springs) and bolts (T^2 / 2k).
+// springs of closed contacts, N^2 / 2 pn, plus their shear springs, S^2 / 2
+// ps, which a sliding contact keeps stretched by its friction), fixed (fixed-point springs) and bolts (T^2 / 2k).
 // Input work: gravity (m g . centroid displacement) and loads (point loads,
 // as assembled, plus the work of moving fixed points on their springs and of
 // a body acceleration, m b . centroid displacement, e.g. an earthquake).
