@@ -153,6 +153,8 @@ AnaImport import_ana(const std::string& text, const std::string& label, const Bl
   DfScenario& sc = out.scenario;
   ModelInput& in = sc.input;
   Control& ctl = in.control;
+  // The old program loads the model suddenly unless <Gravity flag="yes">.
+  ctl.initial_equilibrium = false;
   in.geometry = blocks;
   std::map<int, AnaMaterial> materials;
   std::map<int, std::pair<const XMLElement*, JointProperties>> joints;
@@ -213,8 +215,8 @@ AnaImport import_ana(const std::string& text, const std::string& label, const Bl
         ctl.initial_equilibrium = true;
         out.warnings.push_back(label + ":" + std::to_string(e->GetLineNum()) +
                                ": <Gravity flag=\"yes\"> (the old program's gravity turn-on phase) is run as "
-                               "control.initial_equilibrium: the model is relaxed under gravity with every contact "
-                               "held before t = 0.");
+                               "control.initial_equilibrium: the model is relaxed under gravity before t = 0, first "
+                               "with every contact held, then with the joints' friction.");
       }
     } else if (name == "Rotation" || name == "Autotimestep" || name == "AConstants" || name == "Writevertices") {
       // Always exact rotation and automatic step control here; the constants are unused.

@@ -257,7 +257,7 @@ Parsed parse(const YamlNode& root) {
   ctl.shear_ratio = c.number("shear_ratio", ctl.shear_ratio, Range::positive());
   ctl.fixed_penalty_factor = c.number("fixed_penalty_factor", ctl.fixed_penalty_factor, Range::positive());
   ctl.solver = c.choice("solver", {"auto", "cholmod", "pcg"}, "auto");
-  ctl.initial_equilibrium = c.flag("initial_equilibrium", false);
+  ctl.initial_equilibrium = c.flag("initial_equilibrium", true);
   ctl.contact_clusters = c.flag("contact_clusters", ctl.contact_clusters);
   return p;
 }

@@ -21,7 +21,8 @@
 // How, in two phases of static solves (the velocity is zeroed after each),
 // each repeated until no vertex moves more than 1e-9 w0 (at most 50 in each
 // phase; an iterate whose contact states do not settle within
-// max_open_close ends the phase unaccepted):
+// max(100, max_open_close) iterations ends the phase unaccepted; phase 2
+// follows whenever phase 1 accepted a solve):
 //  1. every closed contact stuck, pseudo step 10 dt (the inertia term then
 //     only regularises): the blocks settle into their springs without any
 //     slip, whatever the friction;
@@ -53,7 +54,6 @@
 // stays 0, the velocities are the initial ones, contacts keep their states
 // and their springs loaded, the histories and the energy ledger start from
 // the settled state.
-#include <algorithm>
 #include <cmath>
 
 #include "dda/df/simulation.hpp"
@@ -66,15 +66,15 @@ namespace dda::df {
 // iterations.
 constexpr int kMaxSettleIterations = 50;
 
-int Simulation::relax(bool contacts_stick) {
+Simulation::Relaxation Simulation::relax(bool contacts_stick) {
   const int nb = model_.block_count();
   double dts = 10 * model_.control.dt;
   const double tolerance = 1e-9 * *model_.control.w0;
   settling_stuck_ = contacts_stick;
   double last_moved = 0;
-  bool relaxed = false;
-  int k = 0, since_switch = 0;  // solves, and accepted solves at this pseudo step
-  for (; k < kMaxSettleIterations; ++k) {
+  Relaxation r;
+  int since_switch = 0;  // accepted solves at this pseudo step
+  for (int k = 0; k < kMaxSettleIterations; ++k) {
     detect_contacts();
     std::vector<Contact> work = contacts_;
     Eigen::VectorXd d;
@@ -108,17 +108,17 @@ int Simulation::relax(bool contacts_stick) {
     rec.max_displacement = moved;  // accept() hands it to the near list's bound
     accept(dts, d, work, rec);
     ++settle_iterations_;
+    ++r.solves;
     time_ = 0;
     step_count_ = 0;  // bonds still form between faces in touch
     for (BlockState& b : blocks_) b.velocity.setZero();
     if (moved <= tolerance) {
-      relaxed = true;
-      ++k;
+      r.reached = true;
       break;
     }
   }
   settling_stuck_ = false;
-  return relaxed ? k : -std::max(k, 1);
+  return r;
 }
 
 void Simulation::settle() {
@@ -134,10 +134,16 @@ void Simulation::settle() {
   settling_ = true;
   settle_iterations_ = 0;
   start_up_ = {};
-  start_up_.stuck_iterations = relax(true);
-  if (start_up_.stuck_iterations > 0) {
-    start_up_.friction_iterations = relax(false);
-    start_up_.frictional_equilibrium = start_up_.friction_iterations > 0;
+  // Phase 2 follows whenever phase 1 got anywhere: a block that topples
+  // keeps phase 1 from its tolerance, but the rest of the model is relaxed
+  // and its contacts still deserve their friction.
+  const Relaxation stuck = relax(true);
+  start_up_.stuck_iterations = stuck.solves;
+  start_up_.stuck_equilibrium = stuck.reached;
+  if (stuck.solves > 0) {
+    const Relaxation friction = relax(false);
+    start_up_.friction_iterations = friction.solves;
+    start_up_.frictional_equilibrium = stuck.reached && friction.reached;
   }
   settling_ = false;
   // The relaxation's pseudo-steps leave no motion behind: the run starts

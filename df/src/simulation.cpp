@@ -346,7 +346,10 @@ bool Simulation::open_close(double dt, std::vector<Contact>& contacts, Eigen::Ve
   bool trial = trial_first;
   moved_blocks_.start(block_radii());
   const TrialScope trial_scope(*solver_);
-  for (iterations = 1; iterations <= model_.control.max_open_close; ++iterations) {
+  // The start-up relaxation has no shorter step to fall back on, so it may
+  // iterate longer than a step (settle.cpp).
+  const int limit = settling_ ? std::max(kSettleOpenClose, model_.control.max_open_close) : model_.control.max_open_close;
+  for (iterations = 1; iterations <= limit; ++iterations) {
     {
       const ScopedTimer timer(timings_.assembly);
       // Swapping a spring costs twice adding it: when many contacts changed
@@ -360,7 +363,7 @@ bool Simulation::open_close(double dt, std::vector<Contact>& contacts, Eigen::Ve
     }
     {
       const ScopedTimer timer(timings_.solve);
-      solver_->set_trial(trial && iterations < model_.control.max_open_close);
+      solver_->set_trial(trial && iterations < limit);
       d = solver_->solve_step(system_, dt);
       ++timings_.solves;
     }
@@ -413,7 +416,7 @@ bool Simulation::open_close(double dt, std::vector<Contact>& contacts, Eigen::Ve
       trial = false;
       continue;
     }
-    if (model_.control.contact_clusters && iterations < model_.control.max_open_close) {
+    if (model_.control.contact_clusters && iterations < limit) {
       // The changes settled on the blocks around them: the next global
       // solve checks them, at full accuracy (contact_clusters.cpp).
       const bool settled = settle_clusters(dt, contacts, d, changes, friction);
@@ -425,7 +428,7 @@ bool Simulation::open_close(double dt, std::vector<Contact>& contacts, Eigen::Ve
     }
     if (iterations == 1) trial = true;  // a full first solve (trial_first false) that did not settle: trials from here
   }
-  iterations = model_.control.max_open_close;
+  iterations = limit;
   return false;
 }
 

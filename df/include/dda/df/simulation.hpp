@@ -134,12 +134,12 @@ class Simulation {
   // Settling iterations spent on Control::initial_equilibrium (settle.cpp).
   int settle_iterations() const { return settle_iterations_; }
   // The start-up relaxation of Control::initial_equilibrium, phase by phase
-  // (settle.cpp): static solves with every closed contact stuck, then with
-  // the friction laws, and whether that second phase found a frictional
-  // equilibrium (false: it was undone, the run starts from phase 1's state).
+  // (settle.cpp): the static solves accepted with every closed contact
+  // stuck and whether they reached equilibrium, then those with the
+  // friction laws and whether the model ended in frictional equilibrium.
   struct StartUp {
     int stuck_iterations = 0, friction_iterations = 0;
-    bool frictional_equilibrium = false;
+    bool stuck_equilibrium = false, frictional_equilibrium = false;
   };
   const StartUp& start_up() const { return start_up_; }
   // Runs the start-up relaxation now if it has not run (the first step
@@ -241,7 +241,15 @@ class Simulation {
   void settle();
   // One phase of settle(): static pseudo-steps until no vertex moves more
   // than the tolerance; true when it got there.
-  int relax(bool contacts_stick);  // solves spent; negative: did not get there
+  // Open-close iterations a relaxation solve may take at least: the 50 a
+  // 2,221-block tunnel needed in its first stuck solve (the default 6 of a
+  // step ended its relaxation there).
+  static constexpr int kSettleOpenClose = 100;
+  struct Relaxation {
+    int solves = 0;        // accepted
+    bool reached = false;  // no vertex moved more than the tolerance in the last
+  };
+  Relaxation relax(bool contacts_stick);
   void check_runaway(const Eigen::VectorXd& d, double moved, double dt, bool at_min_dt) const;
   // Dashpot matrix of a viscous boundary edge in the current configuration,
   // and the traction from outside on it during the step [time_, time_ + dt].
