@@ -131,6 +131,21 @@ TEST(Simulation3, CubeHoldsWhenFrictionExceedsDip) {
 }
 
 
+// The limit case: friction 0.1 deg above the dip (factor of safety
+// tan 20.1 / tan 20 = 1.005). A rigid cube at rest does not move; the DDA
+// cube starts with no contact force, falls into its penalty springs under
+// the suddenly applied gravity, and must still hold: < 1e-4 m in 2 s, the
+// shear-spring stretch (2.2e-6 m, above) included.
+TEST(Simulation3, CubeHoldsWithFrictionJustAboveTheDip) {
+  for (const double dipdir : {90.0, 210.0}) {
+    SCOPED_TRACE(::testing::Message() << "dip direction " << dipdir);
+    const SlideResult r = slide(20, 20.1, 1e-3, 2.0, dipdir);
+    print("V1-3D phi=20.1", r, 0.0);
+    EXPECT_LT(std::abs(r.down_dip), 1e-4);
+    EXPECT_LT(std::abs(r.cross), 1e-6);
+  }
+}
+
 // The friction laws of the 2D solver through the same interface
 // (friction_laws.hpp). Expected: the rigid block on the plane obeys
 //   s'' = g (sin a - cos a mu(s', s)),  s(0) = s'(0) = 0,
