@@ -28,6 +28,7 @@
 #include "dda/df/model.hpp"
 #include "dda/df/moved_blocks.hpp"
 #include "dda/df/near_list.hpp"
+#include "dda/df/start_up.hpp"
 #include "dda/df/step_timings.hpp"
 #include "dda/df/viscous_boundary.hpp"
 
@@ -136,11 +137,8 @@ class Simulation {
   // The start-up relaxation of Control::initial_equilibrium, phase by phase
   // (settle.cpp): static solves with every closed contact stuck, then with
   // the friction laws, and whether that second phase found a frictional
-  // equilibrium (false: it was undone, the run starts from phase 1's state).
-  struct StartUp {
-    int stuck_iterations = 0, friction_iterations = 0;
-    bool frictional_equilibrium = false;
-  };
+  // equilibrium (start_up.hpp; the 3D solver reports the same).
+  using StartUp = ::dda::df::StartUp;
   const StartUp& start_up() const { return start_up_; }
   // Runs the start-up relaxation now if it has not run (the first step
   // otherwise does), so that a caller can count or report it apart.
@@ -240,7 +238,7 @@ class Simulation {
   void store_energy(EnergyRecord& e, const std::vector<ContactEnergy>& contacts) const;
   void settle();
   // One phase of settle(): static pseudo-steps until no vertex moves more
-  // than the tolerance; true when it got there.
+  // than the tolerance (start_up_relax.hpp's rules).
   int relax(bool contacts_stick);  // solves spent; negative: did not get there
   void check_runaway(const Eigen::VectorXd& d, double moved, double dt, bool at_min_dt) const;
   // Dashpot matrix of a viscous boundary edge in the current configuration,
