@@ -40,13 +40,16 @@ constexpr double kDeg = std::numbers::pi / 180;
 using testing::box;
 
 struct SlideResult {
-  double down_dip = 0, cross = 0, penetration = 0;
+  double down_dip = 0, cross = 0, penetration = 0;  // from t = 0 (the settled state with initial_equilibrium)
   int unconverged = 0, max_iterations = 0;
   int contacts = 0, vertex_face = 0, sliding = 0, locked = 0;  // at the end
+  df::StartUp start_up;
 };
 
-SlideResult slide(double alpha_deg, const df::JointProperties& joint, double dt, double t_end,
-                  double dipdir_deg = 90) {
+// The cube on the plane; with initial_equilibrium it is relaxed statically
+// under gravity before t = 0 (Control3::initial_equilibrium).
+Model3 slide_model(double alpha_deg, const df::JointProperties& joint, double dipdir_deg,
+                   bool initial_equilibrium = false) {
   const Matrix3d r = testing::plane_rotation(alpha_deg, dipdir_deg);
   Model3 m;
   m.blocks = {box({-5, -5, -1}, {5, 5, 0}, r), box({-0.5, -0.5, 0}, {0.5, 0.5, 1}, r)};
@@ -57,7 +60,15 @@ SlideResult slide(double alpha_deg, const df::JointProperties& joint, double dt,
   m.shear_penalty = 1e9;
   m.gravity = {0, 0, -9.81};
   m.contact_reach = 0.01;  // > 2.5 x the largest step displacement (1.7 m/s * 1 ms)
-  Simulation3 sim(m);
+  m.control.initial_equilibrium = initial_equilibrium;
+  return m;
+}
+
+SlideResult slide(double alpha_deg, const df::JointProperties& joint, double dt, double t_end,
+                  double dipdir_deg = 90, bool initial_equilibrium = false) {
+  const Matrix3d r = testing::plane_rotation(alpha_deg, dipdir_deg);
+  Simulation3 sim(slide_model(alpha_deg, joint, dipdir_deg, initial_equilibrium));
+  sim.start();  // the relaxation, if asked for: the slide is measured from where it leaves the cube
   const Vec3 c0 = sim.blocks()[1].centroid;
   const Vec3 dip = r * Vec3(1, 0, 0), strike = r * Vec3(0, 1, 0), normal = r * Vec3(0, 0, 1);
   SlideResult out;
@@ -77,13 +88,15 @@ SlideResult slide(double alpha_deg, const df::JointProperties& joint, double dt,
     if (c.state == ContactState3::Locked) ++out.locked;
   }
   out.contacts = static_cast<int>(sim.contacts().size());
+  out.start_up = sim.start_up();
   return out;
 }
 
-SlideResult slide(double alpha_deg, double phi_deg, double dt, double t_end, double dipdir_deg = 90) {
+SlideResult slide(double alpha_deg, double phi_deg, double dt, double t_end, double dipdir_deg = 90,
+                  bool initial_equilibrium = false) {
   df::JointProperties joint;
   joint.friction_deg = phi_deg;
-  return slide(alpha_deg, joint, dt, t_end, dipdir_deg);
+  return slide(alpha_deg, joint, dt, t_end, dipdir_deg, initial_equilibrium);
 }
 
 void print(const char* what, const SlideResult& r, double expected) {
@@ -106,6 +119,7 @@ TEST(Simulation3, CubeSlidesDownPlaneV1) {
     SCOPED_TRACE(::testing::Message() << "dt " << k.dt << " dip direction " << k.dipdir);
     const SlideResult r = slide(20, 10, k.dt, t, k.dipdir);
     print("V1-3D phi=10", r, expected);
+    std::printf("  relative error %.2e\n", (r.down_dip - expected) / expected);
     EXPECT_NEAR(r.down_dip, expected, 0.01 * expected);
     EXPECT_LT(std::abs(r.cross), 1e-6);
     EXPECT_LT(r.penetration, 1e-3);
@@ -130,12 +144,16 @@ TEST(Simulation3, CubeHoldsWhenFrictionExceedsDip) {
   }
 }
 
-
 // The limit case: friction 0.1 deg above the dip (factor of safety
 // tan 20.1 / tan 20 = 1.005). A rigid cube at rest does not move; the DDA
 // cube starts with no contact force, falls into its penalty springs under
 // the suddenly applied gravity, and must still hold: < 1e-4 m in 2 s, the
 // shear-spring stretch (2.2e-6 m, above) included.
+//
+// FAILS TODAY (known, kept at its bound): the cube slides 7.5 mm in 2 s
+// (7.508e-3 m at dip direction 90, 7.567e-3 m at 210), all four contacts
+// sliding at the end. See SettledCubeHoldsWithFrictionJustAboveTheDip for
+// why starting from equilibrium does not cure it.
 TEST(Simulation3, CubeHoldsWithFrictionJustAboveTheDip) {
   for (const double dipdir : {90.0, 210.0}) {
     SCOPED_TRACE(::testing::Message() << "dip direction " << dipdir);
@@ -143,6 +161,92 @@ TEST(Simulation3, CubeHoldsWithFrictionJustAboveTheDip) {
     print("V1-3D phi=20.1", r, 0.0);
     EXPECT_LT(std::abs(r.down_dip), 1e-4);
     EXPECT_LT(std::abs(r.cross), 1e-6);
+  }
+}
+
+// The same cube relaxed first (Control3::initial_equilibrium): it should
+// start at rest on loaded contacts, in frictional equilibrium, and hold,
+// measured from the settled state at t = 0.
+//
+// FAILS TODAY (known, kept at its bound), for two reasons outside the
+// relaxation, both in how a 3D sliding contact picks its friction
+// direction (finish_step: slip_dir follows the step's slip however small):
+//  * phase 2 finds no frictional equilibrium: the uphill corners slide,
+//    and their friction turns sideways with the corners' lateral creep
+//    (the cube's Poisson expansion loads its corners across the slope,
+//    about 140 N each), so they hold less down the dip; the downhill
+//    corners then go over their strength too and the phase stops. With
+//    poisson 0 the phase reaches equilibrium in 3 solves.
+//  * from that equilibrium (poisson 0) the run still slides 7.6 mm: at t = 0
+//    the uphill corners sit at their strength, a step moves them by next
+//    to nothing (1e-10 m) in no particular direction, and the friction
+//    takes that direction: the symmetry breaks, the corners' forces swing
+//    sideways and the cube walks down.
+// Measured: 7.631e-3 m (dip direction 90), 7.678e-3 m (210), phase 2 -3
+// solves. Turning the friction direction only as far as a spring at the
+// friction limit would turn (slip_dir * strength / ps + slip) makes this
+// test pass (0 m) and the cube with gravity applied suddenly slide 0.14 mm,
+// but takes the V4 shaking table from -3 % to -11 % of the analytical
+// slide (its bound is 5 %) and fails the V3 check that a stiffer penalty
+// comes closer: not changed here.
+TEST(Simulation3, SettledCubeHoldsWithFrictionJustAboveTheDip) {
+  for (const double dipdir : {90.0, 210.0}) {
+    SCOPED_TRACE(::testing::Message() << "dip direction " << dipdir);
+    const SlideResult r = slide(20, 20.1, 1e-3, 2.0, dipdir, true);
+    print("V1-3D phi=20.1 settled", r, 0.0);
+    std::printf("  moved %.3e m down the dip from t = 0\n", r.down_dip);
+    std::printf("  start-up: %d solves stuck, %d with friction, frictional equilibrium %d\n",
+                r.start_up.stuck_iterations, r.start_up.friction_iterations, r.start_up.frictional_equilibrium);
+    EXPECT_GT(r.start_up.stuck_iterations, 0);
+    EXPECT_GT(r.start_up.friction_iterations, 0);
+    EXPECT_TRUE(r.start_up.frictional_equilibrium);
+    EXPECT_LT(std::abs(r.down_dip), 1e-4);
+    EXPECT_LT(std::abs(r.cross), 1e-6);
+    EXPECT_EQ(r.locked, 4);
+    EXPECT_EQ(r.unconverged, 0);
+  }
+}
+
+// Friction well above the dip: the relaxation hands the cube over at rest
+// on loaded contacts, in frictional equilibrium. With gravity applied
+// suddenly the cube first moves by its shear springs' stretch (7e-6 m,
+// CubeHoldsWhenFrictionExceedsDip); settled, that stretch happened before
+// t = 0 and the cube does not move.
+TEST(Simulation3, SettledCubeStartsAtRest) {
+  for (const double dipdir : {90.0, 210.0}) {
+    SCOPED_TRACE(::testing::Message() << "dip direction " << dipdir);
+    const SlideResult r = slide(20, 30, 1e-3, 1.0, dipdir, true);
+    print("V1-3D phi=30 settled", r, 0.0);
+    std::printf("  moved %.2e m down the dip from t = 0\n", r.down_dip);
+    EXPECT_GT(r.start_up.stuck_iterations, 0);
+    EXPECT_GT(r.start_up.friction_iterations, 0);
+    EXPECT_TRUE(r.start_up.frictional_equilibrium);
+    EXPECT_LT(std::abs(r.down_dip), 1e-8);
+    EXPECT_LT(std::abs(r.cross), 1e-8);
+    EXPECT_EQ(r.locked, 4);
+  }
+}
+
+// Friction below the dip: the relaxation finds no frictional equilibrium
+// (the cube creeps a constant 0.5 a dts^2 a solve, and phase 2 stops), and
+// the cube, released at rest from the settled state, follows V1 within 1 %.
+TEST(Simulation3, SettledCubeStillSlidesV1) {
+  const double alpha = 20 * kDeg, phi = 10 * kDeg, g = 9.81, t = 1.0;
+  const double expected = 0.5 * g * (std::sin(alpha) - std::cos(alpha) * std::tan(phi)) * t * t;
+  for (const double dipdir : {90.0, 210.0}) {
+    SCOPED_TRACE(::testing::Message() << "dip direction " << dipdir);
+    const SlideResult r = slide(20, 10, 1e-3, t, dipdir, true);
+    print("V1-3D phi=10 settled", r, expected);
+    std::printf("  start-up: %d solves stuck, %d with friction, frictional equilibrium %d; relative error %.2e\n",
+                r.start_up.stuck_iterations, r.start_up.friction_iterations, r.start_up.frictional_equilibrium,
+                (r.down_dip - expected) / expected);
+    EXPECT_GT(r.start_up.stuck_iterations, 0);
+    EXPECT_LT(r.start_up.friction_iterations, 0);
+    EXPECT_FALSE(r.start_up.frictional_equilibrium);
+    EXPECT_NEAR(r.down_dip, expected, 0.01 * expected);
+    EXPECT_LT(std::abs(r.cross), 1e-6);
+    EXPECT_EQ(r.sliding, 4);
+    EXPECT_EQ(r.unconverged, 0);
   }
 }
 
