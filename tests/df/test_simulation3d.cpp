@@ -250,6 +250,31 @@ TEST(Simulation3, SettledCubeStillSlidesV1) {
   }
 }
 
+// A run restored from a checkpoint has started: it does not relax again,
+// and it goes on exactly as the run it was taken from.
+TEST(Simulation3, ResumedRunDoesNotRelaxAgain) {
+  df::JointProperties joint;
+  joint.friction_deg = 20.1;
+  const Model3 m = slide_model(20, joint, 90, true);
+  Simulation3 a(m);
+  for (int s = 0; s < 20; ++s) a.step(1e-3);
+  ASSERT_GT(a.settle_iterations(), 0);
+  const Simulation3State saved = a.state();
+  EXPECT_TRUE(saved.started);
+  for (int s = 0; s < 20; ++s) a.step(1e-3);
+
+  Simulation3 b(m);
+  b.restore(saved);
+  b.start();
+  EXPECT_EQ(b.settle_iterations(), 0);
+  EXPECT_EQ(b.start_up().stuck_iterations, 0);
+  for (int s = 0; s < 20; ++s) b.step(1e-3);
+  EXPECT_EQ(b.settle_iterations(), 0);
+  EXPECT_EQ(b.time(), a.time());
+  EXPECT_EQ(b.blocks()[1].vertices, a.blocks()[1].vertices);
+  EXPECT_EQ(b.log().size(), a.log().size());
+}
+
 // The friction laws of the 2D solver through the same interface
 // (friction_laws.hpp). Expected: the rigid block on the plane obeys
 //   s'' = g (sin a - cos a mu(s', s)),  s(0) = s'(0) = 0,

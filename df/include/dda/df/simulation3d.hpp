@@ -203,6 +203,7 @@ struct Simulation3State {
   std::vector<Vec3> fixed_at, load_at, measure_at;
   std::vector<std::vector<MeasurementSample3>> histories;
   df::LinearSolver::WarmStart solver_warm_start;  // PCG's start vector (empty for CHOLMOD)
+  bool started = false;                           // initial equilibrium done (or not asked for)
 };
 
 class ContactCoupling3;  // df/src/contact_coupling3.hpp
