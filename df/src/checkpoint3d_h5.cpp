@@ -62,6 +62,7 @@ void write_checkpoint3(h5::Writer& w, const Simulation3State& s) {
   w.attr_f64(g.get(), "time", s.time);
   w.attr_f64(g.get(), "dt", s.dt);
   w.attr_i32(g.get(), "step_count", static_cast<std::int32_t>(s.log.size()));
+  w.attr_i32(g.get(), "started", s.started ? 1 : 0);
   w.attr_text(g.get(), "description",
               "complete 3D simulation state after step step_count; with /steps (the log) and /series (the "
               "histories) it is what `dda df --resume` continues from");
@@ -148,6 +149,9 @@ Simulation3State read_checkpoint3(const h5::Reader& r, const std::vector<std::si
   Simulation3State s;
   s.time = *time;
   s.dt = *dt;
+  // Files written before the attribute existed come from runs that had no
+  // initial equilibrium to make: they have started.
+  s.started = r.attr_int(g.get(), "started", "/checkpoint").value_or(1) != 0;
 
   const std::size_t nb = vertex_counts.size();
   std::size_t nv = 0;

@@ -38,6 +38,7 @@ struct Parsed3 {
   df::RunLength run;
   int max_open_close = 10;
   std::string solver = "auto";
+  bool initial_equilibrium = false;
   std::optional<double> normal_penalty, shear_penalty, contact_reach;
 };
 
@@ -117,7 +118,8 @@ void read_loading3(const YamlNode& root, Parsed3& p) {
 
 void read_control3(const YamlNode& root, Parsed3& p) {
   const YamlNode c = root.child("control");
-  std::vector<std::string> keys{"max_open_close", "normal_penalty", "shear_penalty", "contact_reach", "solver"};
+  std::vector<std::string> keys{"max_open_close", "normal_penalty", "shear_penalty", "contact_reach", "solver",
+                                "initial_equilibrium"};
   keys.insert(keys.end(), std::begin(df::kRunLengthKeys), std::end(df::kRunLengthKeys));
   c.allow(keys);
   const Control3 defaults3;
@@ -130,6 +132,7 @@ void read_control3(const YamlNode& root, Parsed3& p) {
   if (c.has("shear_penalty")) p.shear_penalty = c.number("shear_penalty", Range::positive());
   if (c.has("contact_reach")) p.contact_reach = c.number("contact_reach", Range::positive());
   p.solver = c.choice("solver", {"auto", "cholmod", "pcg"}, "auto");
+  p.initial_equilibrium = c.flag("initial_equilibrium", false);
 }
 
 Parsed3 parse(const YamlNode& root) {
@@ -326,6 +329,7 @@ DfScenario3 read_df3_scenario(const YamlNode& root, const PolyhedronModel& block
   c.max_displacement_ratio = p.run.max_displacement_ratio;
   c.min_dt_ratio = p.run.min_dt_ratio;
   c.solver = p.solver;
+  c.initial_equilibrium = p.initial_equilibrium;
   m.max_iterations = p.max_open_close;
   m.normal_penalty = p.normal_penalty ? *p.normal_penalty : default_normal_penalty(m);
   m.shear_penalty = p.shear_penalty ? *p.shear_penalty : m.normal_penalty;

@@ -244,8 +244,12 @@ void Simulation3::prepare_input(double dt) {
   body_acceleration_ = model_.gravity;
   Vec3 foundation(0, 0, 0);
   if (const auto& eq = model_.earthquake; eq.motion) {
-    body_acceleration_ += eq.mode->body_acceleration(*eq.motion, time_, dt);
-    foundation = eq.mode->foundation_increment(*eq.motion, time_, dt);
+    // Settling, time stands at 0 (as in 2D): the ground's acceleration at
+    // t = 0 (none, for a record that starts at rest), a foundation that
+    // does not move.
+    const double span = settling_ ? 0.0 : dt;
+    body_acceleration_ += eq.mode->body_acceleration(*eq.motion, time_, span);
+    foundation = eq.mode->foundation_increment(*eq.motion, time_, span);
   }
   for (size_t b = 0; b < known_.size(); ++b)
     if (dof_[b] < 0) known_[b].segment<3>(kTranslation) = foundation;
@@ -283,9 +287,12 @@ bool Simulation3::iterate(double dt, std::vector<Vector12d>& d, int& iterations)
   // were assembled in: the next iterate swaps only their springs.
   std::vector<std::pair<int, ContactState3>> changed;
   std::vector<ContactState3> before(contacts_.size());
-  while (iterations < model_.max_iterations) {
+  // The start-up relaxation has no shorter step to fall back on, so it may
+  // iterate longer than a step (start_up.hpp).
+  const int limit = settling_ ? std::max(df::kSettleOpenClose, model_.max_iterations) : model_.max_iterations;
+  while (iterations < limit) {
     ++iterations;
-    solver_->set_trial(trial && iterations < model_.max_iterations);
+    solver_->set_trial(trial && iterations < limit);
     d = solve(dt, iterations == 1 ? nullptr : &changed);
     changed.clear();
     const bool was_trial = solver_->last_was_trial();
@@ -356,6 +363,7 @@ StepInfo3 Simulation3::record(double dt, const std::vector<Vector12d>& d, double
 }
 
 StepInfo3 Simulation3::step(double dt) {
+  start();
   detect();
   std::vector<Vector12d> d;
   int iterations = 0;
@@ -365,6 +373,7 @@ StepInfo3 Simulation3::step(double dt) {
 
 StepInfo3 Simulation3::advance(double max_dt) {
   const Control3& ctl = model_.control;
+  start();
   if (dt_ <= 0) dt_ = ctl.dt;
   detect();
   start_contacts_ = contacts_;  // into the storage of the last step's copy
@@ -433,10 +442,11 @@ void Simulation3::finish_step(const std::vector<Vector12d>& d, double dt) {
     // A contact still sliding forwards slides on along this step's slip.
     if (c.state == ContactState3::Sliding && c.slip.dot(c.slip_dir) > model_.tolerance)
       c.slip_dir = c.slip.normalized();
-    // The law's memory over the accepted step (as the 2D solver).
+    // The law's memory over the accepted step (as the 2D solver); the
+    // joint's own law, also while settling with the contacts stuck.
     df::FrictionInput in = friction_input3(c, dt);
     in.slip_sign = slip_sign3(c);
-    law_of(c).advance(in, c.friction);
+    friction_[static_cast<size_t>(c.joint)]->advance(in, c.friction);
     if (c.state == ContactState3::Sliding) c.friction.slip += c.slip_velocity * dt;
   }
 #pragma omp parallel for schedule(static) if (nb > df::parallel_grain())

@@ -43,13 +43,16 @@ void Simulation3::index_points() {
 }
 
 void Simulation3::add_point_terms(int b, double dt, const BlockGeometry3& g, Matrix12d& k, Vector12d& f) const {
+  // Settling (initial_equilibrium), time stands at 0: the loads of t = 0,
+  // and a moving fixed point must not move yet.
+  const double span = settling_ ? 0.0 : dt;
   for (const int p : loads_of_block_[static_cast<size_t>(b)])
-    add_point_load(g, load_at_[static_cast<size_t>(p)], model_.loads[static_cast<size_t>(p)].force.average(time_, time_ + dt),
-                   f);
+    add_point_load(g, load_at_[static_cast<size_t>(p)],
+                   model_.loads[static_cast<size_t>(p)].force.average(time_, time_ + span), f);
   for (const int p : fixed_of_block_[static_cast<size_t>(b)]) {
     const FixedPoint3& fp = model_.fixed_points[static_cast<size_t>(p)];
     Vec3 target = fp.position;
-    if (fp.motion) target += fp.motion->at(time_ + dt);
+    if (fp.motion) target += fp.motion->at(time_ + span);
     const double penalty = fp.penalty > 0 ? fp.penalty : 10 * model_.normal_penalty;
     add_point_spring(g, fixed_at_[static_cast<size_t>(p)], target - fixed_at_[static_cast<size_t>(p)], penalty, k, f);
   }

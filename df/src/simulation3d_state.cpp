@@ -18,6 +18,7 @@ Simulation3State Simulation3::state() const {
   s.measure_at = measure_at_;
   s.histories = histories_;
   s.solver_warm_start = solver_->warm_start();
+  s.started = started_;
   return s;
 }
 
@@ -46,6 +47,7 @@ void Simulation3::restore(const Simulation3State& s) {
   measure_at_ = s.measure_at;
   histories_ = s.histories;
   solver_->set_warm_start(s.solver_warm_start);
+  started_ = s.started;
 }
 
 }  // namespace dda::df3

@@ -145,6 +145,51 @@ TEST(Results3d, ResumeReproducesTheUninterruptedRun) {
   fs::remove(part);
 }
 
+// With initial_equilibrium the run relaxes once, before its first step.
+// The checkpoint says that it has (`started`), so a run resumed from the
+// results file does not relax again and ends where the uninterrupted run
+// ends; a file saved before the first step has not started.
+TEST(Results3d, ResumedRunDoesNotRelaxAgain) {
+  const PolyhedronModel blocks = incline_blocks();
+  Model3 model = incline_model(blocks);
+  model.control.initial_equilibrium = true;
+  const std::string whole = temp("settled_whole.h5").string(), part = temp("settled_part.h5").string();
+  Simulation3 a(model);
+  Results3 ra = fresh(blocks);
+  ASSERT_EQ(run_recorded(a, ra, whole, RunControl3{}), df::RunEnd::Finished);
+  EXPECT_GT(a.settle_iterations(), 0);
+  {
+    Simulation3 s(model);
+    Results3 r = fresh(blocks);
+    RunControl3 rc;
+    rc.stop_at_step = 0;
+    ASSERT_EQ(run_recorded(s, r, part, rc), df::RunEnd::Stopped);
+    EXPECT_FALSE(read_results3_h5(part).checkpoint->started);
+  }
+  {
+    Simulation3 s(model);
+    Results3 r = fresh(blocks);
+    RunControl3 rc;
+    rc.stop_at_step = 17;
+    ASSERT_EQ(run_recorded(s, r, part, rc), df::RunEnd::Stopped);
+  }
+  Results3 saved = read_results3_h5(part);
+  ASSERT_TRUE(saved.checkpoint.has_value());
+  EXPECT_TRUE(saved.checkpoint->started);
+  Simulation3 b(model);
+  b.restore(*saved.checkpoint);
+  Results3 rb = fresh(blocks);
+  rb.frames = saved.frames;
+  ASSERT_EQ(run_recorded(b, rb, part, RunControl3{}), df::RunEnd::Finished);
+  EXPECT_EQ(b.settle_iterations(), 0);
+  EXPECT_EQ(b.start_up().stuck_iterations, 0);
+  ASSERT_EQ(a.log().size(), b.log().size());
+  EXPECT_EQ(a.time(), b.time());
+  for (std::size_t i = 0; i < a.blocks().size(); ++i) EXPECT_EQ(a.blocks()[i].vertices, b.blocks()[i].vertices);
+  fs::remove(whole);
+  fs::remove(part);
+}
+
 TEST(Results3d, RefusesOtherFiles) {
   const PolyhedronModel blocks = incline_blocks();
   Simulation3 sim(incline_model(blocks));

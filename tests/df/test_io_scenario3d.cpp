@@ -78,6 +78,17 @@ TEST(Scenario3d, BuildsTheModel) {
   EXPECT_EQ(resolve_output_schedule(s.output, m.control).interval, 0.5 / 20);
 }
 
+// control.initial_equilibrium is read in 3D as in 2D (off unless given).
+TEST(Scenario3d, ReadsInitialEquilibrium) {
+  EXPECT_FALSE(read(kScenario).model.control.initial_equilibrium);
+  const std::string on = replaced(kScenario, "contact_reach: 0.02}", "contact_reach: 0.02, initial_equilibrium: true}");
+  EXPECT_TRUE(read(on).model.control.initial_equilibrium);
+  const std::string off = replaced(kScenario, "contact_reach: 0.02}", "contact_reach: 0.02, initial_equilibrium: false}");
+  EXPECT_FALSE(read(off).model.control.initial_equilibrium);
+  const std::string bad = replaced(kScenario, "contact_reach: 0.02}", "contact_reach: 0.02, initial_equilibrium: 3}");
+  EXPECT_EQ(error_of(bad).rfind("s.yaml:12: control.initial_equilibrium", 0), 0u) << error_of(bad);
+}
+
 TEST(Scenario3d, FixedBlocksByIdBodyAndBox) {
   EXPECT_EQ(read(replaced(kScenario, "fixed: {below: -0.2}", "fixed: {blocks: [0]}")).model.fixed,
             (std::vector<bool>{true, false}));

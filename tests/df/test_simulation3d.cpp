@@ -40,13 +40,16 @@ constexpr double kDeg = std::numbers::pi / 180;
 using testing::box;
 
 struct SlideResult {
-  double down_dip = 0, cross = 0, penetration = 0;
+  double down_dip = 0, cross = 0, penetration = 0;  // from t = 0 (the settled state with initial_equilibrium)
   int unconverged = 0, max_iterations = 0;
   int contacts = 0, vertex_face = 0, sliding = 0, locked = 0;  // at the end
+  df::StartUp start_up;
 };
 
-SlideResult slide(double alpha_deg, const df::JointProperties& joint, double dt, double t_end,
-                  double dipdir_deg = 90) {
+// The cube on the plane; with initial_equilibrium it is relaxed statically
+// under gravity before t = 0 (Control3::initial_equilibrium).
+Model3 slide_model(double alpha_deg, const df::JointProperties& joint, double dipdir_deg,
+                   bool initial_equilibrium = false) {
   const Matrix3d r = testing::plane_rotation(alpha_deg, dipdir_deg);
   Model3 m;
   m.blocks = {box({-5, -5, -1}, {5, 5, 0}, r), box({-0.5, -0.5, 0}, {0.5, 0.5, 1}, r)};
@@ -57,7 +60,15 @@ SlideResult slide(double alpha_deg, const df::JointProperties& joint, double dt,
   m.shear_penalty = 1e9;
   m.gravity = {0, 0, -9.81};
   m.contact_reach = 0.01;  // > 2.5 x the largest step displacement (1.7 m/s * 1 ms)
-  Simulation3 sim(m);
+  m.control.initial_equilibrium = initial_equilibrium;
+  return m;
+}
+
+SlideResult slide(double alpha_deg, const df::JointProperties& joint, double dt, double t_end,
+                  double dipdir_deg = 90, bool initial_equilibrium = false) {
+  const Matrix3d r = testing::plane_rotation(alpha_deg, dipdir_deg);
+  Simulation3 sim(slide_model(alpha_deg, joint, dipdir_deg, initial_equilibrium));
+  sim.start();  // the relaxation, if asked for: the slide is measured from where it leaves the cube
   const Vec3 c0 = sim.blocks()[1].centroid;
   const Vec3 dip = r * Vec3(1, 0, 0), strike = r * Vec3(0, 1, 0), normal = r * Vec3(0, 0, 1);
   SlideResult out;
@@ -77,13 +88,15 @@ SlideResult slide(double alpha_deg, const df::JointProperties& joint, double dt,
     if (c.state == ContactState3::Locked) ++out.locked;
   }
   out.contacts = static_cast<int>(sim.contacts().size());
+  out.start_up = sim.start_up();
   return out;
 }
 
-SlideResult slide(double alpha_deg, double phi_deg, double dt, double t_end, double dipdir_deg = 90) {
+SlideResult slide(double alpha_deg, double phi_deg, double dt, double t_end, double dipdir_deg = 90,
+                  bool initial_equilibrium = false) {
   df::JointProperties joint;
   joint.friction_deg = phi_deg;
-  return slide(alpha_deg, joint, dt, t_end, dipdir_deg);
+  return slide(alpha_deg, joint, dt, t_end, dipdir_deg, initial_equilibrium);
 }
 
 void print(const char* what, const SlideResult& r, double expected) {
@@ -106,6 +119,7 @@ TEST(Simulation3, CubeSlidesDownPlaneV1) {
     SCOPED_TRACE(::testing::Message() << "dt " << k.dt << " dip direction " << k.dipdir);
     const SlideResult r = slide(20, 10, k.dt, t, k.dipdir);
     print("V1-3D phi=10", r, expected);
+    std::printf("  relative error %.2e\n", (r.down_dip - expected) / expected);
     EXPECT_NEAR(r.down_dip, expected, 0.01 * expected);
     EXPECT_LT(std::abs(r.cross), 1e-6);
     EXPECT_LT(r.penetration, 1e-3);
@@ -130,6 +144,80 @@ TEST(Simulation3, CubeHoldsWhenFrictionExceedsDip) {
   }
 }
 
+// Friction 0.1 deg above the dip (factor of safety 1.005) does not hold
+// the cube yet, with gravity applied suddenly (7.5 mm in 2 s) or after the
+// start-up relaxation (7.6 mm): a 3D sliding contact turns its friction
+// along its last slip however small, and the cube's Poisson creep and
+// rounding turn the corners' friction sideways (docs/solver3d.md, "Friction
+// at its limit"). Not tested until it holds.
+
+// Friction well above the dip: the relaxation hands the cube over at rest
+// on loaded contacts, in frictional equilibrium. With gravity applied
+// suddenly the cube first moves by its shear springs' stretch (7e-6 m,
+// CubeHoldsWhenFrictionExceedsDip); settled, that stretch happened before
+// t = 0 and the cube does not move.
+TEST(Simulation3, SettledCubeStartsAtRest) {
+  for (const double dipdir : {90.0, 210.0}) {
+    SCOPED_TRACE(::testing::Message() << "dip direction " << dipdir);
+    const SlideResult r = slide(20, 30, 1e-3, 1.0, dipdir, true);
+    print("V1-3D phi=30 settled", r, 0.0);
+    std::printf("  moved %.2e m down the dip from t = 0\n", r.down_dip);
+    EXPECT_GT(r.start_up.stuck_iterations, 0);
+    EXPECT_GT(r.start_up.friction_iterations, 0);
+    EXPECT_TRUE(r.start_up.frictional_equilibrium);
+    EXPECT_LT(std::abs(r.down_dip), 1e-8);
+    EXPECT_LT(std::abs(r.cross), 1e-8);
+    EXPECT_EQ(r.locked, 4);
+  }
+}
+
+// Friction below the dip: the relaxation finds no frictional equilibrium
+// (the cube creeps a constant 0.5 a dts^2 a solve, and phase 2 stops), and
+// the cube, released at rest from the settled state, follows V1 within 1 %.
+TEST(Simulation3, SettledCubeStillSlidesV1) {
+  const double alpha = 20 * kDeg, phi = 10 * kDeg, g = 9.81, t = 1.0;
+  const double expected = 0.5 * g * (std::sin(alpha) - std::cos(alpha) * std::tan(phi)) * t * t;
+  for (const double dipdir : {90.0, 210.0}) {
+    SCOPED_TRACE(::testing::Message() << "dip direction " << dipdir);
+    const SlideResult r = slide(20, 10, 1e-3, t, dipdir, true);
+    print("V1-3D phi=10 settled", r, expected);
+    std::printf("  start-up: %d solves stuck, %d with friction, frictional equilibrium %d; relative error %.2e\n",
+                r.start_up.stuck_iterations, r.start_up.friction_iterations, r.start_up.frictional_equilibrium,
+                (r.down_dip - expected) / expected);
+    EXPECT_GT(r.start_up.stuck_iterations, 0);
+    EXPECT_GT(r.start_up.friction_iterations, 0);  // it ran, and crept without end (the flag below)
+    EXPECT_FALSE(r.start_up.frictional_equilibrium);
+    EXPECT_NEAR(r.down_dip, expected, 0.01 * expected);
+    EXPECT_LT(std::abs(r.cross), 1e-6);
+    EXPECT_EQ(r.sliding, 4);
+    EXPECT_EQ(r.unconverged, 0);
+  }
+}
+
+// A run restored from a checkpoint has started: it does not relax again,
+// and it goes on exactly as the run it was taken from.
+TEST(Simulation3, ResumedRunDoesNotRelaxAgain) {
+  df::JointProperties joint;
+  joint.friction_deg = 20.1;
+  const Model3 m = slide_model(20, joint, 90, true);
+  Simulation3 a(m);
+  for (int s = 0; s < 20; ++s) a.step(1e-3);
+  ASSERT_GT(a.settle_iterations(), 0);
+  const Simulation3State saved = a.state();
+  EXPECT_TRUE(saved.started);
+  for (int s = 0; s < 20; ++s) a.step(1e-3);
+
+  Simulation3 b(m);
+  b.restore(saved);
+  b.start();
+  EXPECT_EQ(b.settle_iterations(), 0);
+  EXPECT_EQ(b.start_up().stuck_iterations, 0);
+  for (int s = 0; s < 20; ++s) b.step(1e-3);
+  EXPECT_EQ(b.settle_iterations(), 0);
+  EXPECT_EQ(b.time(), a.time());
+  EXPECT_EQ(b.blocks()[1].vertices, a.blocks()[1].vertices);
+  EXPECT_EQ(b.log().size(), a.log().size());
+}
 
 // The friction laws of the 2D solver through the same interface
 // (friction_laws.hpp). Expected: the rigid block on the plane obeys

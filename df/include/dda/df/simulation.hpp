@@ -28,6 +28,7 @@
 #include "dda/df/model.hpp"
 #include "dda/df/moved_blocks.hpp"
 #include "dda/df/near_list.hpp"
+#include "dda/df/start_up.hpp"
 #include "dda/df/step_timings.hpp"
 #include "dda/df/viscous_boundary.hpp"
 
@@ -134,13 +135,10 @@ class Simulation {
   // Settling iterations spent on Control::initial_equilibrium (settle.cpp).
   int settle_iterations() const { return settle_iterations_; }
   // The start-up relaxation of Control::initial_equilibrium, phase by phase
-  // (settle.cpp): the static solves accepted with every closed contact
-  // stuck and whether they reached equilibrium, then those with the
-  // friction laws and whether the model ended in frictional equilibrium.
-  struct StartUp {
-    int stuck_iterations = 0, friction_iterations = 0;
-    bool stuck_equilibrium = false, frictional_equilibrium = false;
-  };
+  // (settle.cpp): static solves with every closed contact stuck, then with
+  // the friction laws, and whether that second phase found a frictional
+  // equilibrium (start_up.hpp; the 3D solver reports the same).
+  using StartUp = ::dda::df::StartUp;
   const StartUp& start_up() const { return start_up_; }
   // Runs the start-up relaxation now if it has not run (the first step
   // otherwise does), so that a caller can count or report it apart.
@@ -240,15 +238,7 @@ class Simulation {
   void store_energy(EnergyRecord& e, const std::vector<ContactEnergy>& contacts) const;
   void settle();
   // One phase of settle(): static pseudo-steps until no vertex moves more
-  // than the tolerance; true when it got there.
-  // Open-close iterations a relaxation solve may take at least: the 50 a
-  // 2,221-block tunnel needed in its first stuck solve (the default 6 of a
-  // step ended its relaxation there).
-  static constexpr int kSettleOpenClose = 100;
-  struct Relaxation {
-    int solves = 0;        // accepted
-    bool reached = false;  // no vertex moved more than the tolerance in the last
-  };
+  // than the tolerance (start_up_relax.hpp's rules).
   Relaxation relax(bool contacts_stick);
   void check_runaway(const Eigen::VectorXd& d, double moved, double dt, bool at_min_dt) const;
   // Dashpot matrix of a viscous boundary edge in the current configuration,

@@ -30,6 +30,7 @@
 #include "dda/df/ground_motion3.hpp"
 #include "dda/df/points3d.hpp"
 #include "dda/df/linear_solver.hpp"
+#include "dda/df/start_up.hpp"
 #include "dda/df/step_timings.hpp"
 
 namespace dda::df3 {
@@ -45,6 +46,14 @@ struct Control3 {
   // conjugate gradients, warm-started) or "auto": CHOLMOD below
   // kAutoPcgBlocks3 (80) free blocks, PCG from there on.
   std::string solver = "auto";
+  // Start from equilibrium, as the 2D Control::initial_equilibrium: before
+  // the first step the model is relaxed statically under gravity, first
+  // with every closed contact stuck, then with the joints' friction
+  // (settle3d.cpp); time stays 0, the velocities are the initial ones.
+  // Without it the blocks start with no contact force and fall into their
+  // springs under suddenly applied gravity, a jolt the closed-form
+  // solutions (which start at rest) do not have.
+  bool initial_equilibrium = false;
 };
 
 // Size from which the 3D "auto" solver uses PCG, in free blocks. Measured on
@@ -194,6 +203,7 @@ struct Simulation3State {
   std::vector<Vec3> fixed_at, load_at, measure_at;
   std::vector<std::vector<MeasurementSample3>> histories;
   df::LinearSolver::WarmStart solver_warm_start;  // PCG's start vector (empty for CHOLMOD)
+  bool started = false;                           // initial equilibrium done (or not asked for)
 };
 
 class ContactCoupling3;  // df/src/contact_coupling3.hpp
@@ -206,7 +216,9 @@ class Simulation3 {
   Simulation3& operator=(Simulation3&&) noexcept;
 
   // One step of length dt (s), accepted whatever happens; vertices,
-  // velocities, stresses and contact anchors are updated at the end.
+  // velocities, stresses and contact anchors are updated at the end. The
+  // first step (of step or advance) first runs the start-up relaxation of
+  // Control3::initial_equilibrium, unless start() has.
   StepInfo3 step(double dt);
   // One step with step control (Model3::control): dt cut by 3 when the
   // contacts do not settle, or to what the displacement limit allows, and
@@ -232,6 +244,19 @@ class Simulation3 {
   // and total are not filled: bench/bench_df3d.cpp times those itself).
   const df::StepTimings& timings() const { return timings_; }
   const df::LinearSolver& solver() const { return *solver_; }
+  // The start-up relaxation of Control3::initial_equilibrium (settle3d.cpp),
+  // as the 2D Simulation reports it: the static solves spent with the
+  // contacts stuck, then with friction, and whether the model came to rest
+  // in frictional equilibrium (start_up.hpp).
+  using StartUp = df::StartUp;
+  const StartUp& start_up() const { return start_up_; }
+  int settle_iterations() const { return settle_iterations_; }  // accepted static solves, both phases
+  // Runs the start-up relaxation now if it has not run (the first step
+  // otherwise does), so that a caller can report it before the first frame.
+  // A run restored from a checkpoint has started and does not relax again.
+  void start() {
+    if (!started_) settle();
+  }
 
  private:
   void detect();                     // contacts at the start of the step, with their joints
@@ -271,7 +296,15 @@ class Simulation3 {
   void index_points();
   void add_point_terms(int b, double dt, const BlockGeometry3& g, Matrix12d& k, Vector12d& f) const;
   void sample_measurements();
-  const df::FrictionLaw& law_of(const Contact3& c) const { return *friction_[static_cast<size_t>(c.joint)]; }
+  // The law the open-close iteration uses: the joint's, or while the model
+  // settles with its contacts stuck, one that never lets go.
+  const df::FrictionLaw& law_of(const Contact3& c) const {
+    return settling_stuck_ ? *df::stuck_friction() : *friction_[static_cast<size_t>(c.joint)];
+  }
+  // Control3::initial_equilibrium (settle3d.cpp): both phases, and one of
+  // them (solves spent, negative when it did not come to rest).
+  void settle();
+  df::Relaxation relax(bool contacts_stick);
 
   Model3 model_;
   // The step's input: gravity plus the earthquake's body acceleration on
@@ -308,6 +341,11 @@ class Simulation3 {
   static constexpr int kRanges = 8;  // fixed: it sets the summation order of K and F
   std::vector<std::vector<int>> range_contacts_ = std::vector<std::vector<int>>(kRanges);
   df::StepTimings timings_;
+  bool started_ = false;         // settle() has run (or was not asked for)
+  bool settling_ = false;        // before t = 0, relaxing statically: time stands still
+  bool settling_stuck_ = false;  // and every closed contact sticks (its first phase)
+  int settle_iterations_ = 0;
+  StartUp start_up_;
 };
 
 }  // namespace dda::df3
