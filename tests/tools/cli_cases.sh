@@ -341,6 +341,25 @@ case_df_progress_lines() {
   check_progress_lines err.txt time 1 || fail "3D progress lines: $(cat err.txt)"
 }
 
+case_df_start_lines() {
+  # What the run says before its first step, checked by hand: the incline's
+  # E is 50 GPa and the default penalty 50 E, so pn = ps = 2.5e12 N/m; a
+  # dynamic parameter of 0.99 caps a free fall at g dt / (1 - 0.99) =
+  # 9.81 * 0.001 / 0.01 = 0.981 m/s; the slab and slider start relaxed.
+  write_incline
+  "$DDA" dl incline.yaml -o lines.h5 -q && "$DDA" dc lines.h5 -o blocks.h5 -q || fail "dl, dc"
+  sed 's/dt: 0.001, total_time: 1.0/dt: 0.001, dynamic: 0.99, total_time: 0.01/' incline.yaml > s.yaml
+  "$DDA" df s.yaml --blocks blocks.h5 -o r.h5 > out.txt 2> err.txt || fail "df: $(cat err.txt)"
+  grep -q "^DF: contact springs pn 2.5e+12 N/m, ps 2.5e+12 N/m (per m of thickness); dt 0.001 s; up to 6 open-close iterations a step, contact clusters on$" out.txt \
+    || fail "no contact-springs line: $(cat out.txt)"
+  grep -q "caps a free fall at g dt / (1 - dynamic) = 0.981 m/s at dt 0.001 s" out.txt || fail "no dynamic note: $(cat out.txt)"
+  grep -qE "^DF: initial equilibrium: [0-9]+ static solves with the contacts stuck" out.txt || fail "no start-up line: $(cat out.txt)"
+  # Loads switched on at t = 0: no relaxation to report; dynamic 1: no note.
+  sed 's/dt: 0.001, total_time: 1.0/dt: 0.001, initial_equilibrium: false, total_time: 0.01/' incline.yaml > f.yaml
+  "$DDA" df f.yaml --blocks blocks.h5 -o f.h5 > out.txt 2> err.txt || fail "df f.yaml: $(cat err.txt)"
+  ! grep -q "initial equilibrium\|dynamic" out.txt || fail "f.yaml said: $(cat out.txt)"
+}
+
 case_df_history_columns() {
   write_incline
   "$DDA" run incline.yaml -o out -q --no-vtk || fail "run"

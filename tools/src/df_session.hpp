@@ -2,6 +2,7 @@
 // What `dda df` does around a forward run, 2D (cmd_df.cpp) and 3D
 // (cmd_df3.cpp) alike: the progress bar, Ctrl-C / SIGTERM as a clean stop,
 // the ParaView series, and the sentences that end a run.
+#include <algorithm>
 #include <chrono>
 #include <condition_variable>
 #include <csignal>
@@ -129,6 +130,29 @@ void adopt_saved(Results& results, Results& saved, const std::string& path, cons
                        num(saved.checkpoint->time) + " s\n");
 }
 
+// The settings the run's answer hangs on, said before it starts: the
+// contact springs (from the model unless the scenario gave them), the
+// time step and the contact iteration.
+template <class Sim>
+std::string contact_settings(const Sim& sim) {
+  const auto& m = sim.model();
+  std::string line;
+  if constexpr (requires { m.joint_pn; }) {
+    if (m.joint_pn.empty()) return "no joints";
+    const auto [pn_lo, pn_hi] = std::minmax_element(m.joint_pn.begin(), m.joint_pn.end());
+    const auto [ps_lo, ps_hi] = std::minmax_element(m.joint_ps.begin(), m.joint_ps.end());
+    auto range = [](double lo, double hi) { return lo == hi ? num(lo) : num(lo) + " to " + num(hi); };
+    line = "contact springs pn " + range(*pn_lo, *pn_hi) + " N/m, ps " + range(*ps_lo, *ps_hi) + " N/m (per m of thickness); dt " +
+           num(m.control.dt) + " s; up to " + std::to_string(m.control.max_open_close) + " open-close iterations a step" +
+           (m.control.contact_clusters ? ", contact clusters on" : ", contact clusters off");
+  } else {
+    line = "contact springs pn " + num(m.normal_penalty) + " N/m, ps " + num(m.shear_penalty) +
+           " N/m (per contact point); dt " + num(m.control.dt) + " s; up to " + std::to_string(m.max_iterations) +
+           " open-close iterations a step";
+  }
+  return line;
+}
+
 template <class Sim>
 bool model_asks_for_equilibrium(const Sim& sim) {
   return sim.model().control.initial_equilibrium && sim.log().empty();
@@ -148,6 +172,7 @@ void run_session(Sim& sim, Results& results, const OutputOptions& output, const 
   const df::RunThreads threads(blocks);
   say(stage.quiet, "DF: " + std::to_string(blocks) + " blocks on " + std::to_string(threads.threads()) +
                        (threads.threads() == 1 ? " thread\n" : " threads\n"));
+  say(stage.quiet, "DF: " + contact_settings(sim) + "\n");
   if constexpr (requires { sim.model().control.dynamic; }) {
     // A dynamic parameter below 1 damps every motion, free falls included,
     // which the classic examples' 0.99 hid: falling roof beds moved at a
