@@ -107,6 +107,28 @@ TEST(Results3d, WritesAndReadsBack) {
   fs::remove(path);
 }
 
+// Runs `model` from the start and stops it after `steps` steps, saving to
+// `path` (a results file with a checkpoint, as `dda df --stop-at-step`).
+void run_stopped_at(const Model3& model, const PolyhedronModel& blocks, const std::string& path, int steps) {
+  Simulation3 s(model);
+  Results3 r = fresh(blocks);
+  RunControl3 rc;
+  rc.stop_at_step = steps;
+  ASSERT_EQ(run_recorded(s, r, path, rc), df::RunEnd::Stopped);
+}
+
+// Resumes the run saved in `path` to its end, as `dda df --resume`.
+Simulation3 resumed_to_end(const Model3& model, const PolyhedronModel& blocks, const std::string& path) {
+  Results3 saved = read_results3_h5(path);
+  EXPECT_FALSE(saved.complete);
+  Simulation3 b(model);
+  b.restore(*saved.checkpoint);
+  Results3 rb = fresh(blocks);
+  rb.frames = saved.frames;
+  EXPECT_EQ(run_recorded(b, rb, path, RunControl3{}), df::RunEnd::Finished);
+  return b;
+}
+
 TEST(Results3d, ResumeReproducesTheUninterruptedRun) {
   const PolyhedronModel blocks = incline_blocks();
   const Model3 model = incline_model(blocks);
@@ -115,21 +137,9 @@ TEST(Results3d, ResumeReproducesTheUninterruptedRun) {
   Results3 ra = fresh(blocks);
   ASSERT_EQ(run_recorded(a, ra, whole, RunControl3{}), df::RunEnd::Finished);
 
-  {
-    Simulation3 s(model);
-    Results3 r = fresh(blocks);
-    RunControl3 rc;
-    rc.stop_at_step = 17;
-    ASSERT_EQ(run_recorded(s, r, part, rc), df::RunEnd::Stopped);
-  }
-  Results3 saved = read_results3_h5(part);
-  EXPECT_FALSE(saved.complete);
-  ASSERT_EQ(saved.log.size(), 17u);
-  Simulation3 b(model);
-  b.restore(*saved.checkpoint);
-  Results3 rb = fresh(blocks);
-  rb.frames = saved.frames;
-  ASSERT_EQ(run_recorded(b, rb, part, RunControl3{}), df::RunEnd::Finished);
+  run_stopped_at(model, blocks, part, 17);
+  ASSERT_EQ(read_results3_h5(part).log.size(), 17u);
+  const Simulation3 b = resumed_to_end(model, blocks, part);
 
   const Results3 x = read_results3_h5(whole), y = read_results3_h5(part);
   ASSERT_EQ(x.log.size(), y.log.size());
@@ -158,29 +168,12 @@ TEST(Results3d, ResumedRunDoesNotRelaxAgain) {
   Results3 ra = fresh(blocks);
   ASSERT_EQ(run_recorded(a, ra, whole, RunControl3{}), df::RunEnd::Finished);
   EXPECT_GT(a.settle_iterations(), 0);
-  {
-    Simulation3 s(model);
-    Results3 r = fresh(blocks);
-    RunControl3 rc;
-    rc.stop_at_step = 0;
-    ASSERT_EQ(run_recorded(s, r, part, rc), df::RunEnd::Stopped);
-    EXPECT_FALSE(read_results3_h5(part).checkpoint->started);
-  }
-  {
-    Simulation3 s(model);
-    Results3 r = fresh(blocks);
-    RunControl3 rc;
-    rc.stop_at_step = 17;
-    ASSERT_EQ(run_recorded(s, r, part, rc), df::RunEnd::Stopped);
-  }
-  Results3 saved = read_results3_h5(part);
-  ASSERT_TRUE(saved.checkpoint.has_value());
-  EXPECT_TRUE(saved.checkpoint->started);
-  Simulation3 b(model);
-  b.restore(*saved.checkpoint);
-  Results3 rb = fresh(blocks);
-  rb.frames = saved.frames;
-  ASSERT_EQ(run_recorded(b, rb, part, RunControl3{}), df::RunEnd::Finished);
+  run_stopped_at(model, blocks, part, 0);
+  EXPECT_FALSE(read_results3_h5(part).checkpoint->started);
+  run_stopped_at(model, blocks, part, 17);
+  ASSERT_TRUE(read_results3_h5(part).checkpoint.has_value());
+  EXPECT_TRUE(read_results3_h5(part).checkpoint->started);
+  const Simulation3 b = resumed_to_end(model, blocks, part);
   EXPECT_EQ(b.settle_iterations(), 0);
   EXPECT_EQ(b.start_up().stuck_iterations, 0);
   ASSERT_EQ(a.log().size(), b.log().size());
