@@ -17,7 +17,7 @@ space, no-break space or thin space ("10 072").
 Marker syntax (words split as by a POSIX shell, so quote a regular
 expression that holds spaces, best in single quotes):
 
-    <!-- check: FILE SELECTOR [scale=X] [offset=Y] [abs] [row=R | at=V] [match=N] -->
+    <!-- check: FILE SELECTOR [scale=X] [offset=Y] [abs] [row=R | at=COLUMN:V] [match=N] -->
 
 FILE is a path relative to OUT_DIR. What SELECTOR means depends on FILE:
 
@@ -26,8 +26,9 @@ FILE is a path relative to OUT_DIR. What SELECTOR means depends on FILE:
           "by_threshold_mm[0.5]", "segments.1.phi_deg".
   *.csv   a column name (the first row is the header); row= picks the value:
           last (default), first, a row index (0-based, negative from the
-          end), or max, min, absmax, mean (of the whole column); or at=V
-          picks the row whose first column (the time, say) is nearest to V.
+          end), or max, min, absmax, mean (of the whole column); or
+          at=COLUMN:V picks the row whose COLUMN is nearest to V
+          ("at=t:0.5": the sample nearest t = 0.5).
   other   a text file (what the run printed, saved by its run.sh): a regular
           expression whose first group is the number; match= picks the match
           (1-based, default 1; "last" for the last one).
@@ -108,14 +109,18 @@ def from_csv(path, column, row, at=None):
         rows = list(csv.reader(f))
     if not rows or column not in rows[0]:
         raise SourceError(f"no column {column!r}")
-    k = rows[0].index(column)
+    header = rows[0]
+    k = header.index(column)
     rows = [r for r in rows[1:] if len(r) > k and r[k].strip()]
     values = [float(r[k]) for r in rows]
     if not values:
         raise SourceError(f"column {column!r} is empty")
     if at is not None:
-        target = float(at)
-        return values[min(range(len(rows)), key=lambda i: abs(float(rows[i][0]) - target))]
+        key, _, target = at.partition(":")
+        if key not in header or not target:
+            raise SourceError(f"at={at}: not COLUMN:VALUE with a column of the file")
+        j, target = header.index(key), float(target)
+        return values[min(range(len(rows)), key=lambda i: abs(float(rows[i][j]) - target))]
     if row == "last":
         return values[-1]
     if row == "first":
