@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
-# The layered-tunnel example, end to end (see README.md). Writes out/.
+# The layered-tunnel example, end to end (see README.md). Writes out/
+# (OUT=... another folder; scripts/check_examples.sh uses it).
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 dda="${DDA:-$here/../../build/bin/dda}"
-out="$here/out"
+out="${OUT:-$here/out}"
 figs="$out/figures"
 rm -rf "$out"
 mkdir -p "$figs"

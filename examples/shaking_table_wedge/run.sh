@@ -44,4 +44,5 @@ for case in "${cases[@]}"; do
       --ramp 5 --lowpass 2.5 --order 4 --duration "$duration" --dt 1e-4 --every 10 -o "$OUT/$name/analytical.csv" \
       --json > "$OUT/$name/analytical.json"
 done
-/usr/bin/python3 "$here/compare.py" "$OUT"
+# The table it prints is saved for scripts/check_readme_numbers.py.
+/usr/bin/python3 "$here/compare.py" "$OUT" | tee "$OUT/compare.txt"

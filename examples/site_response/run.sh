@@ -39,5 +39,7 @@ band=(--fmin 0.3 --fmax 8)
 "$dda" history "$out/results.h5" --csv --acceleration -o "$out/history.csv"
 
 echo "== 4. figures and check"
-"$py" "$here/plot_site_response.py" "$out" -o "$out/figures"
+# The summary it prints (peaks, the check's median) is saved for
+# scripts/check_readme_numbers.py.
+"$py" "$here/plot_site_response.py" "$out" -o "$out/figures" | tee "$out/summary.json"
 echo "figures in $out/figures; ParaView: $out/vtk/df.pvd"

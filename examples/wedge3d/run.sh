@@ -2,6 +2,8 @@
 # The V4 wedge in a jointed slope: DL and DC in 3D, block theory, the 2D
 # section along the wedge's axis, figures, and the check of the wedge's
 # volume and sliding direction (check.py; exits non-zero if they are off).
+# What the run prints that README.md quotes is also saved (wedge.txt,
+# check.txt) for scripts/check_readme_numbers.py.
 # Environment: DDA (the program; default build/bin/dda), OUT (output folder;
 # default examples/wedge3d/out).
 set -euo pipefail
@@ -10,7 +12,7 @@ root="$(cd "$here/../.." && pwd)"
 DDA="${DDA:-$root/build/bin/dda}"
 OUT="${OUT:-$here/out}"
 "$DDA" run "$here/wedge3d.yaml" -o "$OUT"
-"$DDA" wedge --plane 51.4/65.8 --plane 51.4/295.2 --phi 30 --azimuth 0
+"$DDA" wedge --plane 51.4/65.8 --plane 51.4/295.2 --phi 30 --azimuth 0 | tee "$OUT/wedge.txt"
 "$DDA" plot "$OUT/blocks3d.h5" -o "$OUT/figures/wedge_view.png" --view 25 70 --explode 0.3 --title "V4 wedge: block theory"
 "$DDA" plot "$OUT/sections/axis.blocks.h5" -o "$OUT/figures/axis_section.png" --title "Section x = 0 along the wedge axis"
-/usr/bin/python3 "$here/check.py" "$OUT"
+/usr/bin/python3 "$here/check.py" "$OUT" | tee "$OUT/check.txt"
