@@ -360,6 +360,29 @@ case_df_start_lines() {
   ! grep -q "initial equilibrium\|dynamic" out.txt || fail "f.yaml said: $(cat out.txt)"
 }
 
+case_df_friction_limit() {
+  # The incline's slider, of soft rock (E 1 GPa, the scenario default),
+  # with friction 0.1 degree above its 30-degree slope (factor of safety
+  # 1.005) and no control tuning: the default start-up relaxation hands it
+  # over in frictional equilibrium and it stays, moving less than 1e-4 m in
+  # 1 s (a rigid block at rest does not move at all; measured 3.5e-11 m).
+  # With the loads switched on at t = 0 the same slider slid 2.8e-4 m.
+  write_incline
+  sed -e 's/interface: {friction_deg: 20}/interface: {friction_deg: 30.1}/' -e 's/young: 5.0e10/young: 1.0e9/' \
+    incline.yaml > s.yaml
+  grep -q "young: 1.0e9" s.yaml || fail "the scenario edit did not apply"
+  "$DDA" run s.yaml -o out -q --no-vtk --no-plots || fail "run"
+  "$DDA" history out/results.h5 --csv --point slider > h.csv || fail "history"
+  /usr/bin/python3 - h.csv <<'PY' || fail "the slider moved"
+import csv, math, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+first, last = rows[0], rows[-1]
+moved = math.hypot(float(last["slider.ux"]) - float(first["slider.ux"]), float(last["slider.uy"]) - float(first["slider.uy"]))
+print("slider moved %.3e m between t = %s and %s s" % (moved, first["t"], last["t"]))
+assert float(first["t"]) == 0 and float(last["t"]) >= 1 - 1e-9 and moved < 1e-4, moved
+PY
+}
+
 case_df_history_columns() {
   write_incline
   "$DDA" run incline.yaml -o out -q --no-vtk || fail "run"
