@@ -4,7 +4,7 @@
 The wedge is bounded by A, B, the ground z = 10 and the slope face through
 (0, 10, 10) dipping 70 deg north. Its corners are the intersections of three
 of those planes: computed here with numpy, independently of the cutter.
-Expected (shared/validation/CASES.md, V4): the body slides on both planes
+Expected (docs/validation.md, V4): the body slides on both planes
 along trend 000.5 deg, plunge 27.63 deg. Exit status 1 if any check fails.
 """
 import math

@@ -2,7 +2,7 @@
 """The example's pass/fail check (exit status 1 on failure).
 
 * the wedge's yield acceleration (`dda wedge --json`, shaking along +y)
-  against the expected value (CASES.md V4: 0.2074 g for phi = 30 deg);
+  against the expected value (docs/validation.md V4: 0.2074 g for phi = 30 deg);
 * each back-fitted segment friction angle (`dda backfit` JSON) against the
   true angle of the friction table that made the measurement (the table must
   be constant inside each segment);

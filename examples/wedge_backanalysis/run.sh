@@ -12,7 +12,7 @@ figs="$out/figures"
 rm -rf "$out"
 mkdir -p "$figs"
 
-# The V4 wedge of the shaking-table test (CASES.md V4; x east, y north, z up).
+# The V4 wedge of the shaking-table test (docs/validation.md V4; x east, y north, z up).
 planes=(--plane 51.4/065.8 --plane 51.4/295.2)
 # Shaking table: 2 Hz sinusoid along north-south, 0.22 g, linear ramp over 5 s.
 amplitude=0.22 freq=2 ramp=5 duration=25
@@ -20,7 +20,7 @@ amplitude=0.22 freq=2 ramp=5 duration=25
 # sampled at 100 Hz (every 100th step of dt 1e-4 s), Gaussian noise 0.1 mm.
 segments=10,18 noise=1e-4 seed=2026
 # Expected values and tolerances of the check.
-expected_yield=0.2074   # g, CASES.md V4: phi = 30 deg, horizontal shaking along +y
+expected_yield=0.2074   # g, docs/validation.md V4: phi = 30 deg, horizontal shaking along +y
 yield_tol=0.0005        # g; the table gives 4 digits, dda wedge 0.20742 g
 phi_tol=0.2             # deg; recovered angles are within 0.001 deg (README)
 

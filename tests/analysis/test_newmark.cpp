@@ -1,4 +1,4 @@
-// Newmark rigid block on a plane: CASES.md V3 and V1, the yield formula, and
+// Newmark rigid block on a plane: docs/validation.md V3 and V1, the yield formula, and
 // the sign convention for ground and body input.
 #include <gtest/gtest.h>
 
@@ -24,7 +24,7 @@ NewmarkInput v3_input(double dt) {
 }
 }  // namespace
 
-// CASES.md V3: body acceleration 0.5 g sin(10 t) along +x (the dip direction),
+// docs/validation.md V3: body acceleration 0.5 g sin(10 t) along +x (the dip direction),
 // yield tan(phi - alpha) g = 0.17633 g, |D| = 1.239 m after 2 pi s (seed,
 // dt 1e-4). We get 1.23812 m at dt 1e-4 and 1.23812 m at dt 1e-5 (converged);
 // the 0.07% difference is the seed's rounding to 3 digits and its scheme at
@@ -49,7 +49,7 @@ TEST(Newmark, V3Sinusoid) {
   EXPECT_NEAR(run_newmark(v3_input(1e-4), ground).s.back(), r.s.back(), 1e-12);
 }
 
-// CASES.md V1 (alpha 30, phi 25, gravity alone): s(1 s) = 0.47169 m; the
+// docs/validation.md V1 (alpha 30, phi 25, gravity alone): s(1 s) = 0.47169 m; the
 // constant acceleration is integrated exactly.
 TEST(Newmark, V1GravityAlone) {
   NewmarkInput in;

@@ -1,4 +1,4 @@
-// The 3D analytical sliding solution (seed report, ch. 2): CASES.md V1
+// The 3D analytical sliding solution (seed report, ch. 2): docs/validation.md V1
 // (closed form under gravity), V3 (block on 20/090 under horizontal
 // sinusoid), V4 (wedge under gravity alone), contact changes, and a block on
 // one plane shaken along its strike, its dip, and by two- and
@@ -41,7 +41,7 @@ SlidingModel v4_wedge(double phi, Excitation input) {
 
 }  // namespace
 
-// CASES.md V1, alpha = 30, phi = 20: a = 1.81281 m/s^2, s(1 s) = 0.90641 m,
+// docs/validation.md V1, alpha = 30, phi = 20: a = 1.81281 m/s^2, s(1 s) = 0.90641 m,
 // down the dip; the trapezoidal scheme is exact for constant acceleration.
 TEST(Sliding3d, V1ClosedForm) {
   const SlidingRun run = run_sliding(single(30, 135, 20, no_input()), 1e-3, 1.0);
@@ -54,7 +54,7 @@ TEST(Sliding3d, V1ClosedForm) {
   EXPECT_DOUBLE_EQ(run_sliding(single(30, 135, 30.5, no_input()), 1e-3, 1.0).samples.back().u.norm(), 0.0);
 }
 
-// CASES.md V3: plane 20/090, phi 30, r = g [0.5 sin 10t, 0, -1] (body input
+// docs/validation.md V3: plane 20/090, phi 30, r = g [0.5 sin 10t, 0, -1] (body input
 // 0.5 g sin 10t along +x), t = 2 pi: D = (1.165, 0, -0.424), |D| = 1.239 m
 // (seed algorithm, dt 1e-4). We get |D| = 1.23812 m at dt 1e-4 and 1e-5, as
 // dda newmark (test_newmark.cpp) and the second integrator below (to 1e-7):
@@ -83,7 +83,7 @@ TEST(Sliding3d, V3HorizontalSinusoid) {
   EXPECT_NEAR((g.samples.back().u - end.u).norm(), 0.0, 1e-12);
 }
 
-// CASES.md V4: phi = 10 under gravity: a = 2.3731 m/s^2 along the line
+// docs/validation.md V4: phi = 10 under gravity: a = 2.3731 m/s^2 along the line
 // (trend 000.5, plunge 27.63), reactions 0.629 W each.
 TEST(Sliding3d, V4WedgeUnderGravity) {
   const SlidingRun run = run_sliding(v4_wedge(10, no_input()), 1e-3, 2.0);

@@ -1,4 +1,4 @@
-// Limit equilibrium of tetrahedral wedges: CASES.md V4 (seed report's
+// Limit equilibrium of tetrahedral wedges: docs/validation.md V4 (seed report's
 // shaking-table wedge) and V5 (Hoek & Bray example planes).
 #include <gtest/gtest.h>
 
@@ -32,12 +32,12 @@ const Vec3 kGravity(0.0, 0.0, -1.0);
 
 }  // namespace
 
-// CASES.md V4: line of intersection trend 000.5, plunge 27.63; N = 0.629 W each.
+// docs/validation.md V4: line of intersection trend 000.5, plunge 27.63; N = 0.629 W each.
 TEST(WedgeV4, GeometryAndReactions) {
   const WedgeGeometry g = wedge_geometry(v4(30));
   EXPECT_NEAR(g.line_orientation.trend_deg, 0.5, 0.005);
   EXPECT_NEAR(g.line_orientation.plunge_deg, 27.63, 0.005);
-  // CASES.md gives K = 1.42013; the exact vector value from the rounded plane
+  // docs/validation.md gives K = 1.42013; the exact vector value from the rounded plane
   // orientations is 1.42008 (N1 + N2 = 1.25814 over cos 27.63): same to 4 digits.
   EXPECT_NEAR(g.wedge_factor, 1.42013, 1e-4);
   const WedgeEquilibrium e = wedge_equilibrium(v4(30), kGravity);
@@ -47,7 +47,7 @@ TEST(WedgeV4, GeometryAndReactions) {
   EXPECT_NEAR(e.n1, e.n2, 1e-12);  // symmetric planes
 }
 
-// CASES.md V4 table: FS and horizontal yield acceleration along +y (north).
+// docs/validation.md V4 table: FS and horizontal yield acceleration along +y (north).
 TEST(WedgeV4, FactorOfSafetyAndYield) {
   EXPECT_NEAR(wedge_equilibrium(v4(30), kGravity).fs, 1.5663, 5e-5);
   EXPECT_NEAR(wedge_equilibrium(v4(36), kGravity).fs, 1.9710, 5e-5);
@@ -62,7 +62,7 @@ TEST(WedgeV4, FactorOfSafetyAndYield) {
   EXPECT_GT(wedge_yield(v4(30), Vec3(0, -1, 0)).k, 0.5);
 }
 
-// CASES.md V4: FS = 1 at phi = 20.23 degrees.
+// docs/validation.md V4: FS = 1 at phi = 20.23 degrees.
 TEST(WedgeV4, CriticalFriction) {
   const auto phi = wedge_critical_friction(v4(30));
   ASSERT_TRUE(phi.has_value());
@@ -71,7 +71,7 @@ TEST(WedgeV4, CriticalFriction) {
   EXPECT_DOUBLE_EQ(wedge_yield(v4(15), Vec3(0, 1, 0)).k, 0.0);
 }
 
-// CASES.md V5 (Hoek & Bray planes 45/105 and 70/235, dry, friction only).
+// docs/validation.md V5 (Hoek & Bray planes 45/105 and 70/235, dry, friction only).
 TEST(WedgeV5, HoekBray) {
   const WedgeGeometry g = wedge_geometry(v5(20, 30));
   EXPECT_NEAR(g.line_orientation.trend_deg, 157.73, 0.005);

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Command-line tests of the analytical subcommands (newmark, sliding3d, wedge,
 # backfit, record, compare, spectra), one function per case; expected numbers
-# from /work/shared/validation/CASES.md (V3, V4, V5) or closed forms, as noted
+# from docs/validation.md (V3, V4, V5) or closed forms, as noted
 # in each case.
 # Usage: cli_analysis.sh DDA_BINARY CASE WORKDIR SOURCE_DIR
 set -uo pipefail
@@ -57,7 +57,7 @@ case_help() {
   "$DDA" spectra --help | grep -q "hv; --response T (s), SD" || fail "spectra --help does not document the CSV columns"
 }
 
-# CASES.md V4: planes 51.4/065.8, 51.4/295.2.
+# docs/validation.md V4: planes 51.4/065.8, 51.4/295.2.
 case_wedge_v4() {
   "$DDA" wedge --plane 51.4/065.8 --plane 51.4/295.2 --phi 30 --azimuth 0 --json > w30.json || fail "wedge phi 30"
   near "$(json_get w30.json "d['fs']")" 1.5663 5e-5 "FS (phi 30)"
@@ -77,7 +77,7 @@ case_wedge_v4() {
   near "$(json_get wv.json "d['yield_acceleration_g']")" 0.3301 5e-5 "yield acceleration (--direction)"
 }
 
-# CASES.md V5: Hoek & Bray planes 45/105, 70/235.
+# docs/validation.md V5: Hoek & Bray planes 45/105, 70/235.
 case_wedge_v5() {
   "$DDA" wedge --plane 45/105 --plane 70/235 --phi 20,30 --json > a.json || fail "wedge V5"
   near "$(json_get a.json "d['trend']")" 157.73 0.005 "trend"
@@ -89,7 +89,7 @@ case_wedge_v5() {
   near "$(json_get b.json "d['fs']")" 1.4353 5e-5 "FS (30, 30)"
 }
 
-# CASES.md V3: plane 20/090, phi 30, body acceleration 0.5 g sin(10 t) along x;
+# docs/validation.md V3: plane 20/090, phi 30, body acceleration 0.5 g sin(10 t) along x;
 # |D| = 1.239 m after 2 pi s (within 1%).
 case_newmark_v3() {
   "$DDA" newmark --dip 20 --dip-direction 90 --phi 30 --sine 0.5 --omega 10 --axis x --input body \
@@ -103,7 +103,7 @@ case_newmark_v3() {
   near "$(json_get g.json "d['final_displacement']")" "$(json_get nm.json "d['final_displacement']")" 1e-12 "ground vs body"
 }
 
-# CASES.md V3 with the 3D solution: D = (1.165, 0, -0.424), |D| = 1.239 m.
+# docs/validation.md V3 with the 3D solution: D = (1.165, 0, -0.424), |D| = 1.239 m.
 case_sliding3d_v3() {
   "$DDA" sliding3d --plane 20/090 --phi 30 --sine 0.5 --omega 10 --axis x --input body \
     --duration 6.283185307179586 --dt 1e-4 --every 100 -o s3.csv --json > s3.json || fail "sliding3d"
@@ -114,7 +114,7 @@ case_sliding3d_v3() {
   head -1 s3.csv | grep -q '^t,ux,uy,uz,vx,vy,vz,N1,N2$' || fail "CSV header $(head -1 s3.csv)"
 }
 
-# CASES.md V4, phi 10 under gravity: a = 2.3731 m/s^2 along the line, so
+# docs/validation.md V4, phi 10 under gravity: a = 2.3731 m/s^2 along the line, so
 # s(2 s) = 2 a = 4.7462 m; N1 = N2 = 0.629 W.
 case_sliding3d_v4() {
   "$DDA" sliding3d --plane 51.4/065.8 --plane 51.4/295.2 --phi 10 --duration 2 --dt 1e-3 -o w.csv --json > w.json \

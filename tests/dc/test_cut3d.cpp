@@ -313,7 +313,7 @@ TEST(Cut3d, SeedWedgeHasTheExpectedVolumeAndNormals) {
   EXPECT_EQ(matched, 4);
   const auto& body = r.model.bodies[static_cast<std::size_t>(wedge->body)];
   EXPECT_EQ(body.removability, Removability::SlidesTwo);
-  // Trend 000.5, plunge 27.63 (CASES.md V4).
+  // Trend 000.5, plunge 27.63 (docs/validation.md V4).
   EXPECT_NEAR(rad2deg(std::asin(-body.sliding_direction.z())), 27.63, 0.01);
 }
 

@@ -38,7 +38,7 @@ TEST(Removability, BlockOnOneDippingPlaneSlidesDownDip) {
 }
 
 TEST(Removability, SeedWedgeSlidesAlongTheLineOfIntersection) {
-  // Validation case V4 (shared/validation/CASES.md): planes 51.4/065.8 and
+  // Validation case V4 (docs/validation.md): planes 51.4/065.8 and
   // 51.4/295.2 meet along trend 000.5 deg, plunge 27.63 deg; the wedge on
   // both slides along that line.
   const std::vector<Vec3> n = {-dl::normal_from_dip(51.4, 65.8), -dl::normal_from_dip(51.4, 295.2)};

@@ -1,5 +1,5 @@
 #pragma once
-// The V3 model (CASES.md) in 2D, shared by the earthquake tests: a block on
+// The V3 model (docs/validation.md) in 2D, shared by the earthquake tests: a block on
 // a plane dipping 20 degrees towards +x, built as blocks plus a scenario so
 // that the whole earthquake input path (scenario -> record -> mode ->
 // solver) is exercised.
@@ -48,7 +48,7 @@ inline BlockModel v3_blocks() {
 }
 
 // V3 ground acceleration as a CSV record (m/s^2): body acceleration
-// +0.5 g sin(10 t) along x (CASES.md writes r = g [0.5 sin 10t, 0, -1]),
+// +0.5 g sin(10 t) along x (docs/validation.md writes r = g [0.5 sin 10t, 0, -1]),
 // i.e. ground acceleration a_g = -0.5 g sin(10 t). Sampled every 1 ms to
 // 2 pi + 0.01 s; the same file feeds the Newmark reference.
 inline std::string write_v3_record(const std::filesystem::path& dir) {

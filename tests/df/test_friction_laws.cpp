@@ -1,5 +1,5 @@
 // The friction laws on their own (friction_laws.hpp): closed forms of each
-// law, the V7 velocity step of rate and state (CASES.md V7) integrated with
+// law, the V7 velocity step of rate and state (docs/validation.md V7) integrated with
 // the laws' own exact state update, and the checks of their parameters.
 #include <gtest/gtest.h>
 
@@ -107,7 +107,7 @@ StepResponse velocity_step(const RateStateFriction& law, double v1, double v2, d
 }
 
 TEST(FrictionLaws, V7VelocityStepDirectEffectAndSteadyShift) {
-  // CASES.md V7: V1 = 1e-6 -> V2 = 1e-5 m/s. The friction jumps by
+  // docs/validation.md V7: V1 = 1e-6 -> V2 = 1e-5 m/s. The friction jumps by
   // a ln(V2/V1) = 0.023026 and settles, after a slip of ~Dc, at the new
   // steady value, shifted by (a - b) ln(V2/V1) = -0.011513. Both to 1 %.
   const double v1 = 1e-6, v2 = 1e-5, ln = std::log(v2 / v1);

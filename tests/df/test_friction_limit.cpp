@@ -1,7 +1,7 @@
 // Friction at its limit (issue: "friction that holds at its limit"): a block
 // on a plane whose friction angle is 0.1 degree above the slope angle must
 // stay where it is. A rigid block at rest on such a plane has a factor of
-// safety tan(phi) / tan(alpha) = 1.005 and does not move (CASES.md V1: no
+// safety tan(phi) / tan(alpha) = 1.005 and does not move (docs/validation.md V1: no
 // sliding once tan phi >= tan alpha), so the expected motion is the elastic
 // compliance only, micrometres; the bound 1e-4 m over 2 s is the issue's.
 //

@@ -7,7 +7,7 @@
 // direction is (cos a, 0, -sin a) (downhill towards +x, east) and the strike
 // (cross-slope) direction is y.
 //
-// Expected: shared/validation/CASES.md V1, s(t) = 1/2 g (sin a - cos a tan phi)
+// Expected: docs/validation.md V1, s(t) = 1/2 g (sin a - cos a tan phi)
 // t^2 if tan phi < tan a, else 0. For a = 20, phi = 10, t = 1 s, g = 9.81:
 // a_slide = 9.81 (0.342020 - 0.939693 * 0.176327) = 1.729768 m/s^2,
 // s = 0.864884 m (computed below from the formula; the literal is a check).
@@ -129,7 +129,7 @@ TEST(Simulation3, CubeSlidesDownPlaneV1) {
   }
 }
 
-// phi = 30 >= alpha = 20: the cube stays (CASES.md V1: a = 0); what moves is
+// phi = 30 >= alpha = 20: the cube stays (docs/validation.md V1: a = 0); what moves is
 // the elastic shear-spring stretch, W sin a / (4 ps) = 2.2e-6 m.
 TEST(Simulation3, CubeHoldsWhenFrictionExceedsDip) {
   for (const double dipdir : {90.0, 210.0}) {

@@ -1,10 +1,10 @@
 // 3D earthquake input (df/ground_motion3.hpp) on validation case V3
-// (shared/validation/CASES.md): a 1 m cube on a plane 20/090 with phi = 30,
+// (docs/validation.md): a 1 m cube on a plane 20/090 with phi = 30,
 // under the resultant acceleration r(t) = g [0.5 sin 10t, 0, -1] for
 // t in [0, 2 pi] (ten cycles), and the same with a second horizontal
 // component. Expected numbers: the analytical 3D solution of the seed report
 // (`dda sliding3d`, tools/analysis/sliding3d.hpp) run here with dt = 1e-4;
-// CASES.md gives its final displacement for the first case, D = (1.165, 0,
+// docs/validation.md gives its final displacement for the first case, D = (1.165, 0,
 // -0.424) m, |D| = 1.239 m, checked too. The seed reports its 3D-DDA within
 // 3 % (one component) and 8 % (two) of the analytical result; the issue
 // asks for 2 %.
@@ -130,7 +130,7 @@ TEST(GroundMotion3, IntegratesAPiecewiseLinearRecordExactly) {
 TEST(Simulation3Earthquake, OneHorizontalComponentLoadingModeV3) {
   const double t_end = 2 * kPi;
   const Trajectory expected = analytical(body_one, t_end);
-  // The analytical solver against CASES.md: D = (1.165, 0, -0.424) m.
+  // The analytical solver against docs/validation.md: D = (1.165, 0, -0.424) m.
   EXPECT_NEAR(expected.back().x(), 1.165, 0.005);
   EXPECT_NEAR(expected.back().z(), -0.424, 0.005);
   const Trajectory got = dda(body_one, t_end, "loading");

@@ -1,5 +1,5 @@
 // The 3D DDA step (df/simulation3d.hpp) on validation case V4
-// (shared/validation/CASES.md): the tetrahedral wedge on planes
+// (docs/validation.md): the tetrahedral wedge on planes
 // A 51.4/065.8 and B 51.4/295.2.
 //
 // Geometry (as tests/dc/test_cut3d.cpp, SeedWedgeHasTheExpectedVolumeAndNormals,
@@ -14,7 +14,7 @@
 // half-space blocks whose faces reach past the wedge's. Both must give V4;
 // the first is the hard one for contact identity (see the tests at the end).
 //
-// Expected numbers (all from CASES.md V4 unless said):
+// Expected numbers (all from docs/validation.md V4 unless said):
 // * line of intersection: trend 000.5, plunge psi = 27.63 deg;
 // * phi < 20.23 deg: a = g (sin psi - K tan phi cos psi), K = 1.42013;
 //   phi = 10: a = 2.3731 m/s^2, so s(0.5 s) = a t^2 / 2 = 0.29664 m;
@@ -195,16 +195,16 @@ TEST(Simulation3Wedge, GeometryIsV4) {
   ASSERT_GE(w.wedge, 0);
   EXPECT_EQ(w.model.blocks[static_cast<std::size_t>(w.wedge)].faces.size(), 4u);
   EXPECT_NEAR(w.model.blocks[static_cast<std::size_t>(w.wedge)].volume, 80.2, 0.5);  // the header's V
-  // Trend 000.5, plunge 27.63 (CASES.md V4).
+  // Trend 000.5, plunge 27.63 (docs/validation.md V4).
   EXPECT_NEAR(std::asin(-w.line.z()) / kDeg, 27.63, 0.01);
   EXPECT_NEAR(std::atan2(w.line.x(), w.line.y()) / kDeg, 0.5, 0.05);
   // Normal reactions from equilibrium: N_A nA + N_B nB + F l = W e_z.
   Eigen::Matrix3d M;
   M << w.nA, w.nB, w.line;
   const Vec3 x = M.fullPivLu().solve(Vec3(0, 0, 1));
-  EXPECT_NEAR(x(0), 0.629, 0.001);  // CASES.md V4: 0.629 W on each
+  EXPECT_NEAR(x(0), 0.629, 0.001);  // docs/validation.md V4: 0.629 W on each
   EXPECT_NEAR(x(1), 0.629, 0.001);
-  // Wedge factor K = (N_A + N_B) / (W cos psi) (CASES.md: 1.42013).
+  // Wedge factor K = (N_A + N_B) / (W cos psi) (docs/validation.md: 1.42013).
   EXPECT_NEAR((x(0) + x(1)) / std::cos(27.63 * kDeg), 1.42013, 2e-3);
 }
 
@@ -212,7 +212,7 @@ TEST(Simulation3Wedge, GeometryIsV4) {
 TEST(Simulation3Wedge, SlidesAlongTheLineOfIntersectionV4) {
   const double psi = 27.63 * kDeg, phi = 10 * kDeg, K = 1.42013, t = 0.5;
   const double a = kG * (std::sin(psi) - K * std::tan(phi) * std::cos(psi));
-  EXPECT_NEAR(a, 2.3731, 1e-4);  // the number in CASES.md
+  EXPECT_NEAR(a, 2.3731, 1e-4);  // the number in docs/validation.md
   const double expected = 0.5 * a * t * t;
   const WedgeModel w = build(10, kPenalty);
   ASSERT_GE(w.wedge, 0);
@@ -232,7 +232,7 @@ TEST(Simulation3Wedge, SlidesAlongTheLineOfIntersectionV4) {
 // with phi = 10 on A only, the friction on B is the default and it holds
 // (FS with 10 and 45: (N_A tan 10 + N_B tan 45) / (W sin psi) = 1.59).
 TEST(Simulation3Wedge, FrictionComesFromTheJointSetOfTheFaces) {
-  const double t = 0.5, expected = 0.5 * 2.3731 * t * t;  // CASES.md V4, phi = 10
+  const double t = 0.5, expected = 0.5 * 2.3731 * t * t;  // docs/validation.md V4, phi = 10
   WedgeModel w = build(45, kPenalty, Layout::SharedCorners);
   df::JointProperties ten;
   ten.friction_deg = 10;
@@ -283,7 +283,7 @@ TEST(Simulation3Wedge, HoldsWithSharedCornersV4) {
 }
 
 TEST(Simulation3Wedge, SlidesWithSharedCornersV4) {
-  const double a = 2.3731, t = 0.5, expected = 0.5 * a * t * t;  // CASES.md V4, phi = 10
+  const double a = 2.3731, t = 0.5, expected = 0.5 * a * t * t;  // docs/validation.md V4, phi = 10
   const WedgeModel w = build(10, kPenalty, Layout::SharedCorners);
   ASSERT_GE(w.wedge, 0);
   const WedgeResult r = run(w, 1e-3, t);
@@ -327,7 +327,7 @@ TEST(Simulation3Wedge, RestoredStateContinuesExactly) {
 // for another machine's BLAS; a softer penalty (1e10) is +7 %.
 //
 // Amplitude 0.30 g, 45 % above the rigid yield acceleration 0.2074 g
-// (CASES.md): 122.65 mm along the line. Near the yield acceleration the
+// (docs/validation.md): 122.65 mm along the line. Near the yield acceleration the
 // comparison measures something else: DDA's wedge rests on eight elastic
 // point contacts whose locked shear springs also carry force across the
 // line of intersection, so its normal forces at rest are not the limit-

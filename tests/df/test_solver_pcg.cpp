@@ -335,7 +335,7 @@ TEST(BlockSystemScatter, FlaggedItemsInTheOrderOfTheFullScatter) {
   EXPECT_EQ(called, flagged);
 }
 
-// V1 (CASES.md) at phi = 20 with the solver forced to PCG: the same 1 % as
+// V1 (docs/validation.md) at phi = 20 with the solver forced to PCG: the same 1 % as
 // with CHOLMOD (see test_v1_sliding.cpp for the model).
 TEST(SolverPcg, V1SlidingWithinOnePercent) {
   const double alpha = deg2rad(30.0), phi = 20.0;

@@ -190,7 +190,7 @@ Model3 raft(double friction_deg, const std::string& solver) {
   return m;
 }
 
-// With friction 10 deg every cube slides as the block of V1 (CASES.md),
+// With friction 10 deg every cube slides as the block of V1 (docs/validation.md),
 // s = g (sin a - cos a tan phi) t^2 / 2, pushing on its neighbours through
 // face contacts, which couple the blocks in K. Run for t seconds.
 std::vector<double> raft_slides(const std::string& solver, double t, long* pcg_solves = nullptr) {

@@ -1,4 +1,4 @@
-// V1 (CASES.md): a block on a 30-degree plane under gravity.
+// V1 (docs/validation.md): a block on a 30-degree plane under gravity.
 // Expected s(1 s) = g (sin a - cos a tan phi) / 2 (rigid block, Coulomb),
 // and no sliding once tan phi >= tan a. The plane is a DDA block held by
 // three fixed points.

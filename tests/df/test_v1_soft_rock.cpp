@@ -1,4 +1,4 @@
-// V1 (CASES.md) with soft rock: a block on a 30-degree plane, E = 1 GPa and
+// V1 (docs/validation.md) with soft rock: a block on a 30-degree plane, E = 1 GPa and
 // E = 15.3 GPa (the tunnel-roof rock of the seed report), default penalty
 // 50 E, dt 0.1-1 ms. Expected s(1 s) = g (sin a - cos a tan phi) / 2 (rigid
 // block, Coulomb; 0 once tan phi >= tan a).

@@ -1,4 +1,4 @@
-// V2 (CASES.md): two stacked blocks of equal mass on a 30-degree plane,
+// V2 (docs/validation.md): two stacked blocks of equal mass on a 30-degree plane,
 // base friction phi1 = 20, interface friction phi2 = 10. Rigid-block values:
 // a_B = g (sin a - tan phi2 cos a) = 3.40698 m/s^2,
 // a_A = g [sin a - tan phi1 cos a - (tan phi1 - tan phi2) cos a] = 0.21865 m/s^2,

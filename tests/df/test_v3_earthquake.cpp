@@ -1,4 +1,4 @@
-// V3 (CASES.md) in 2D DF: a block on a plane dipping 20 degrees, phi = 30,
+// V3 (docs/validation.md) in 2D DF: a block on a plane dipping 20 degrees, phi = 30,
 // under the horizontal ground acceleration a_g = -0.5 g sin(10 t) along x
 // (body acceleration +0.5 g sin 10t: the x component of the V3 case; the 2D
 // section is the vertical plane through the dip direction, x east, y up).
@@ -9,7 +9,7 @@
 // Expected numbers: computed here with the Newmark library of tools/analysis
 // from the very record file the scenario reads, read as ground acceleration
 // (same sign convention): 1.238 m (`dda newmark` gives 1.23812 m for V3,
-// CASES.md 1.239 m). The DF run reads the record through the scenario path
+// docs/validation.md 1.239 m). The DF run reads the record through the scenario path
 // (loading.earthquake), so the test covers the scenario reader, the record
 // processing, both modes and the solver.
 #include <gtest/gtest.h>

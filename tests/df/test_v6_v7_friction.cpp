@@ -1,4 +1,4 @@
-// CASES.md V6 (spring-slider with static/kinetic friction; velocity
+// docs/validation.md V6 (spring-slider with static/kinetic friction; velocity
 // weakening vs strengthening) and V7 (rate-and-state velocity step) run
 // through the DF solver. The spring is a rock bolt between the slider and a
 // driver block that a moving fixed point carries along a prescribed
@@ -77,7 +77,7 @@ JointProperties law(const std::string& name, std::map<std::string, double> numbe
 
 TEST(FrictionV6, StaticKineticSpringSliderSlipAndDuration) {
   // m = 1000 kg, k = 1e5 N/m, W = m g = 9810 N, Stribeck mu_s = 0.6,
-  // mu_k = 0.5, v_s = 1 mm/s (CASES.md V6): slip per event
+  // mu_k = 0.5, v_s = 1 mm/s (docs/validation.md V6): slip per event
   // 2 (mu_s - mu_k) W / k = 0.019620 m, duration pi sqrt(m/k) = 0.31416 s,
   // peak speed (mu_s - mu_k) W / sqrt(k m) = 0.0981 m/s.
   // v_s is 1 % of the peak speed, so friction is mu_k for all but the
@@ -156,7 +156,7 @@ SpeedRange log_linear_run(double s_value) {
 TEST(FrictionV6, VelocityWeakeningGivesStickSlip) {
   // s = -0.02: the friction's slope s W / V acts as a negative dashpot of
   // 3900 N s/m at V = 5 cm/s (damping ratio -0.2); with no other damping,
-  // steady sliding is unstable (CASES.md V6): the slider alternates between
+  // steady sliding is unstable (docs/validation.md V6): the slider alternates between
   // sticking (speed ~0) and slipping well faster than the drive.
   const SpeedRange r = log_linear_run(-0.02);
   EXPECT_LT(r.lo, 0.1 * 0.05);
@@ -173,7 +173,7 @@ TEST(FrictionV6, VelocityStrengtheningGivesSteadySliding) {
 }
 
 TEST(FrictionV7, RateStateVelocityStepInTheSolver) {
-  // CASES.md V7 with mu0 = 0.6, a = 0.01, b = 0.015, Dc = 1e-4 m,
+  // docs/validation.md V7 with mu0 = 0.6, a = 0.01, b = 0.015, Dc = 1e-4 m,
   // V0 = 1e-6 m/s, the load point moving at V1 = 1 mm/s for 0.2 s (2 Dc of
   // slip), then at V2 = 10 mm/s for 0.1 s (10 Dc). Expected: steady
   // mu(V1) = mu0 + (a - b) ln(V1/V0) = 0.56546; direct effect

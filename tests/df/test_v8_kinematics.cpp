@@ -1,4 +1,4 @@
-// V8 (CASES.md, "Elastic and kinematic checks"): free fall, free spin, pushed
+// V8 (docs/validation.md, "Elastic and kinematic checks"): free fall, free spin, pushed
 // block, column under gravity. The expected numbers are closed forms; the
 // DDA integrator (constant acceleration in the step) is exact for constant
 // acceleration, so the first three hold to rounding.
@@ -94,7 +94,7 @@ TEST(V8, ColumnOnFixedBaseCarriesMeanStress) {
   // (k = 0). DDA has one constant stress per block; the base reaction W =
   // rho g S acts at Y = -h/2 below the centroid, so the ey equation reads
   // S sigma_yy = -(h/2) W, i.e. sigma_yy = -rho g h / 2: the mean of the
-  // linear profile 0 (top) .. -rho g h (base) of CASES.md V8. Shear springs
+  // linear profile 0 (top) .. -rho g h (base) of docs/validation.md V8. Shear springs
   // at the base only act on ex and gxy, so this holds for any friction and
   // either plane mode.
   const double rho = 2500, g = 9.81, h = 2.0;

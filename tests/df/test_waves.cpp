@@ -120,7 +120,7 @@ TEST(Waves, PAndSPulsesCrossALayerAtTheMediumsWaveSpeeds) {
   }
 }
 
-// ../shared/validation/CASES.md V9: a harmonic P wave crossing one joint of
+// docs/validation.md V9: a harmonic P wave crossing one joint of
 // normal stiffness kappa (Pa/m) in a bar of impedance Z = rho c is
 // transmitted with |T| = 1 / sqrt(1 + (omega Z / 2 kappa)^2): 0.7071, 0.8944
 // and 0.9701 for kappa / (omega Z) = 0.5, 1 and 2. The bar: 40 glued blocks
