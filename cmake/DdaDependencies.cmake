@@ -1,5 +1,5 @@
 # All dependencies come from Debian packages (scripts/install-deps.sh).
-# Target names and the pitfalls below are recorded in shared/design/TOOLCHAIN.md.
+# Target names and the pitfalls below are explained in docs/toolchain.md.
 
 # Eigen before CGAL and with NO_MODULE: CGAL's find-modules shadow Eigen's config.
 find_package(Eigen3 3.4 REQUIRED NO_MODULE)

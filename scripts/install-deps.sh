@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs the Debian packages the project needs, only those missing.
-# Facts behind the list: shared/design/TOOLCHAIN.md (OpenBLAS pthread build for
+# Facts behind the list: docs/toolchain.md (OpenBLAS pthread build for
 # CHOLMOD, Debian's python3 for the figures).
 set -euo pipefail
 

@@ -1,5 +1,5 @@
 // 3D block displacement field, mass and elasticity matrices, block terms and
-// the exact rotation update (DDA_FORMULATION.md, "3D").
+// the exact rotation update (docs/formulation.md, "3D").
 #include "dda/df/block3d.hpp"
 
 #include <cmath>

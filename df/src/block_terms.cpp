@@ -1,4 +1,4 @@
-// Block and point terms of the step system (DDA_FORMULATION.md, "Global system").
+// Block and point terms of the step system (docs/formulation.md, "Global system").
 #include "block_terms.hpp"
 
 namespace dda::df {

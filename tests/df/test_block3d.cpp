@@ -265,7 +265,7 @@ TEST(Block3Kinematics, ManySmallRotationsKeepTheShape) {
 
 // One DDA step of a free block (no contacts): inertia and body force only.
 // Returns the increment d; moves the vertices and updates the velocity
-// (v1 = 2 d / dt - v0, DDA_FORMULATION.md "Global system").
+// (v1 = 2 d / dt - v0, docs/formulation.md "Global system").
 Vector12d free_step(Shape& s, Vector12d& v, double rho, const Vec3& b, double dt) {
   const BlockGeometry3 g = block_geometry(s.vertices, s.faces);
   Matrix12d k = Matrix12d::Zero();

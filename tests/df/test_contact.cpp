@@ -1,4 +1,4 @@
-// Contact geometry: the sign convention (penetration negative, DDA_FORMULATION.md
+// Contact geometry: the sign convention (penetration negative, docs/formulation.md
 // "Contacts"), the linearisation of dn, the entrance-edge rule for
 // vertex-vertex contacts, and the broad phase. Expected values are worked by
 // hand in the comments.

@@ -40,7 +40,7 @@ FrictionInput at_speed(double v, double dt, double n = 1.0) {
 }
 
 TEST(FrictionLaws, RateStateSteadyStateIsMu0PlusAMinusBLog) {
-  // At theta = Dc / V: mu = mu0 + (a - b) ln(V / V0) (DDA_FORMULATION.md);
+  // At theta = Dc / V: mu = mu0 + (a - b) ln(V / V0) (docs/formulation.md);
   // the regularised form differs by a exp(-2 mu/a)-small terms, so to 1e-12.
   const RateStateFriction law(rate_state("aging"));
   for (const double v : {1e-9, 1e-6, 1e-4, 1e-2, 1.0}) {

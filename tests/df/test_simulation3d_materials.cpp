@@ -2,7 +2,7 @@
 // (Model3::materials, block_material, initial_stress, initial_velocity),
 // checked against exact results of elasticity and rigid-body mechanics.
 //
-// Why these results are exact for DDA (DDA_FORMULATION.md, "3D"):
+// Why these results are exact for DDA (docs/formulation.md, "3D"):
 // * A step takes the acceleration constant over the step and the spring and
 //   elastic forces at its end. With constant forces and no springs the step
 //   is the exact solution (d = v dt + a dt^2 / 2, v1 = v0 + a dt), so a

@@ -191,9 +191,15 @@ void run_session(Sim& sim, Results& results, const OutputOptions& output, const 
   if constexpr (requires { sim.start_up(); }) {
     // The start-up relaxation runs before frame 0, so that the first frame
     // is the state the run starts from.
+    // It can take minutes on a large model (a 1,601-brick wall: 41 static
+    // solves, over a minute), so the user is told first what is running.
+    const bool relaxing = model_asks_for_equilibrium(sim);
+    if (relaxing)
+      say(stage.quiet, "DF: relaxing the model under its loads before t = 0 (control.initial_equilibrium: at most 50 "
+                       "static solves with the contacts stuck, then 50 with friction)\n");
     sim.start();
     const auto& s = sim.start_up();
-    if (model_asks_for_equilibrium(sim))
+    if (relaxing)
       say(stage.quiet,
           "DF: initial equilibrium: " + std::to_string(s.stuck_iterations) + " static solves with the contacts stuck" +
               (s.stuck_equilibrium ? "" : " (not settled: a block falls, topples or keeps moving)") + ", " +

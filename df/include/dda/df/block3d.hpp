@@ -1,6 +1,6 @@
 #pragma once
 // The displacement field of one 3D block and the 12x12 matrices that follow
-// from it (DDA_FORMULATION.md, "3D"): the first increment of the 3D solver.
+// from it (docs/formulation.md, "3D"): the first increment of the 3D solver.
 //
 // Namespace dda::df3, not dda::df: the 2D vocabulary (kDofs = 6, Vector6d as
 // the block unknowns, Material with a plane mode) would clash.

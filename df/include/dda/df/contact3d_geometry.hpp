@@ -1,6 +1,6 @@
 #pragma once
 // Geometry of the contacts between two convex 3D blocks, linearised in the
-// twelve unknowns of each block (DDA_FORMULATION.md, "3D"; issue 6).
+// twelve unknowns of each block (docs/formulation.md, "3D"; issue 6).
 //
 // A contact is a material point P of block i against a material point Q of
 // block j, with a unit normal n pointing from j to i:

@@ -1,5 +1,5 @@
 #pragma once
-// The smallest complete 3D DDA time step (DDA_FORMULATION.md, "3D"; issue 6):
+// The smallest complete 3D DDA time step (docs/formulation.md, "3D"; issue 6):
 // convex polyhedral blocks with twelve unknowns each (block3d.hpp), contacts
 // from find_contacts3 (contact3d_geometry.hpp) kept across steps with their
 // open / sliding / locked state, one global sparse system per open-close
