@@ -65,7 +65,7 @@ df::Relaxation Simulation::relax(bool contacts_stick) {
     for (BlockState& b : blocks_) b.velocity.setZero();
   };
   const Relaxation r = relax_phase(contacts_stick, model_.control.dt, 1e-9 * *model_.control.w0,
-                                 max_step_displacement_, solve, accept_solve);
+                                 max_step_displacement_, solve, accept_solve, start_up_observer_);
   settling_stuck_ = false;
   return r;
 }

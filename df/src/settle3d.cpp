@@ -62,7 +62,8 @@ df::Relaxation Simulation3::relax(bool contacts_stick) {
     for (Vector12d& v : velocity_) v.setZero();
   };
   const df::Relaxation r = df::relax_phase(contacts_stick, model_.control.dt, 1e-9 * w0_,
-                                     model_.control.max_displacement_ratio * w0_, solve, accept);
+                                     model_.control.max_displacement_ratio * w0_, solve, accept,
+                                           start_up_observer_);
   settling_stuck_ = false;
   return r;
 }

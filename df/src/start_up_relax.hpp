@@ -56,9 +56,11 @@ constexpr int kMaxSettleIterations = 50;
 // largest vertex motion of the solution (not finite: no equilibrium), with
 // the blocks that nothing holds already held where they are. accept(dts,
 // moved) then makes that solve the model's state, at rest. `limit` is the
-// step's displacement limit g2 w0, `tolerance` 1e-9 w0.
+// step's displacement limit g2 w0, `tolerance` 1e-9 w0; `observer` (may be
+// empty) hears of every accepted solve.
 template <class Solve, class Accept>
-Relaxation relax_phase(bool contacts_stick, double dt, double tolerance, double limit, Solve&& solve, Accept&& accept) {
+Relaxation relax_phase(bool contacts_stick, double dt, double tolerance, double limit, Solve&& solve, Accept&& accept,
+                       const StartUpObserver& observer) {
   double dts = 10 * dt;
   double last_moved = 0;
   Relaxation r;
@@ -83,6 +85,7 @@ Relaxation relax_phase(bool contacts_stick, double dt, double tolerance, double 
     last_moved = *moved;
     accept(dts, *moved);
     ++r.solves;
+    if (observer) observer(contacts_stick, r.solves, *moved);
     if (*moved <= tolerance) {
       r.reached = true;
       break;

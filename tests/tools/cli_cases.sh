@@ -354,6 +354,13 @@ case_df_start_lines() {
     || fail "no contact-springs line: $(cat out.txt)"
   grep -q "caps a free fall at g dt / (1 - dynamic) = 0.981 m/s at dt 0.001 s" out.txt || fail "no dynamic note: $(cat out.txt)"
   grep -qE "^DF: initial equilibrium: [0-9]+ static solves with the contacts stuck" out.txt || fail "no start-up line: $(cat out.txt)"
+  # A long relaxation says it is getting somewhere, every progress interval
+  # (here every solve), on stderr; -q silences it.
+  DDA_PROGRESS_SECONDS=1e-9 "$DDA" df s.yaml --blocks blocks.h5 -o p.h5 > out.txt 2> err.txt || fail "df: $(cat err.txt)"
+  grep -qE "^DF: relaxing: 1 static solves with the contacts stuck so far, the last moved a vertex [0-9.e+-]+ m$" err.txt \
+    || fail "no relaxation progress line: $(cat err.txt)"
+  DDA_PROGRESS_SECONDS=1e-9 "$DDA" df s.yaml --blocks blocks.h5 -o q.h5 -q > out.txt 2> err.txt || fail "df -q"
+  [ ! -s out.txt ] && [ ! -s err.txt ] || fail "-q printed: $(cat out.txt err.txt)"
   # Loads switched on at t = 0: no relaxation to report; dynamic 1: no note.
   sed 's/dt: 0.001, total_time: 1.0/dt: 0.001, initial_equilibrium: false, total_time: 0.01/' incline.yaml > f.yaml
   "$DDA" df f.yaml --blocks blocks.h5 -o f.h5 > out.txt 2> err.txt || fail "df f.yaml: $(cat err.txt)"

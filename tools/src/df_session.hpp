@@ -197,7 +197,21 @@ void run_session(Sim& sim, Results& results, const OutputOptions& output, const 
     if (relaxing)
       say(stage.quiet, "DF: relaxing the model under its loads before t = 0 (control.initial_equilibrium: at most 50 "
                        "static solves with the contacts stuck, then 50 with friction)\n");
+    // Off a terminal as on it, a line at least every progress interval
+    // while it lasts (after the solve that passes it).
+    auto last_line = std::chrono::steady_clock::now();
+    const double interval = Progress::progress_interval();
+    if (relaxing && !stage.quiet)
+      sim.observe_start_up([&](bool contacts_stick, int solves, double moved) {
+        const auto now = std::chrono::steady_clock::now();
+        if (std::chrono::duration<double>(now - last_line).count() < interval) return;
+        last_line = now;
+        std::cerr << "DF: relaxing: " << solves << " static solves "
+                  << (contacts_stick ? "with the contacts stuck" : "with friction") << " so far, the last moved a vertex "
+                  << num(moved) << " m\n";
+      });
     sim.start();
+    sim.observe_start_up({});
     const auto& s = sim.start_up();
     if (relaxing)
       say(stage.quiet,

@@ -16,6 +16,7 @@
 #include <limits>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "dda/df/block_kinematics.hpp"
@@ -140,6 +141,8 @@ class Simulation {
   // equilibrium (start_up.hpp; the 3D solver reports the same).
   using StartUp = ::dda::df::StartUp;
   const StartUp& start_up() const { return start_up_; }
+  // Hears of every accepted solve of the start-up relaxation (start_up.hpp).
+  void observe_start_up(df::StartUpObserver observer) { start_up_observer_ = std::move(observer); }
   // Runs the start-up relaxation now if it has not run (the first step
   // otherwise does), so that a caller can count or report it apart.
   void start() {
@@ -296,6 +299,7 @@ class Simulation {
   bool settling_stuck_ = false;        // and every closed contact sticks (its first phase)
   int settle_iterations_ = 0;
   StartUp start_up_;
+  df::StartUpObserver start_up_observer_;
 };
 
 }  // namespace dda::df

@@ -250,6 +250,8 @@ class Simulation3 {
   // in frictional equilibrium (start_up.hpp).
   using StartUp = df::StartUp;
   const StartUp& start_up() const { return start_up_; }
+  // Hears of every accepted solve of the start-up relaxation (start_up.hpp).
+  void observe_start_up(df::StartUpObserver observer) { start_up_observer_ = std::move(observer); }
   int settle_iterations() const { return settle_iterations_; }  // accepted static solves, both phases
   // Runs the start-up relaxation now if it has not run (the first step
   // otherwise does), so that a caller can report it before the first frame.
@@ -346,6 +348,7 @@ class Simulation3 {
   bool settling_stuck_ = false;  // and every closed contact sticks (its first phase)
   int settle_iterations_ = 0;
   StartUp start_up_;
+  df::StartUpObserver start_up_observer_;
 };
 
 }  // namespace dda::df3

@@ -4,6 +4,8 @@
 // report for both solvers, so that whoever prints it (the `dda df` session)
 // says the same for a 2D and a 3D run.
 
+#include <functional>
+
 namespace dda::df {
 
 // The relaxation runs in two phases of static solves (df/src/start_up_relax.hpp):
@@ -26,6 +28,12 @@ struct Relaxation {
   int solves = 0;        // accepted
   bool reached = false;  // the last moved no vertex more than the tolerance
 };
+
+// Told after every accepted relaxation solve: the phase (true: contacts
+// stuck), the solves the phase has accepted so far and the largest vertex
+// motion of the last. Lets a caller show that a long relaxation (minutes on
+// 10k blocks) is getting somewhere.
+using StartUpObserver = std::function<void(bool contacts_stick, int solves, double moved)>;
 
 // Open-close iterations a relaxation solve may take at least. The
 // relaxation has no shorter step to fall back on, and a tunnel of 2,221
