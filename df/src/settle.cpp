@@ -59,7 +59,6 @@ df::Relaxation Simulation::relax(bool contacts_stick) {
     StepRecord rec;
     rec.max_displacement = moved;  // accept() hands it to the near list's bound
     accept(dts, d, work, rec);
-    ++settle_iterations_;
     time_ = 0;
     step_count_ = 0;  // bonds still form between faces in touch
     for (BlockState& b : blocks_) b.velocity.setZero();
@@ -81,7 +80,6 @@ void Simulation::settle() {
     blocks_[i].velocity.setZero();
   }
   settling_ = true;
-  settle_iterations_ = 0;
   start_up_ = relax_both_phases([this](bool contacts_stick) { return relax(contacts_stick); });
   settling_ = false;
   // The relaxation's pseudo-steps leave no motion behind: the run starts

@@ -8,7 +8,7 @@
 // degrees it moves 7e-6 m after t = 0 (its shear springs' stretch);
 // settled, by 1e-10 of s and 2e-13 m. It does not make the cube at friction
 // 20.1 degrees hold: that is how a 3D sliding contact turns its friction
-// (the test SettledCubeHoldsWithFrictionJustAboveTheDip says more).
+// (docs/solver3d.md, "Friction at its limit").
 //
 // While settling time stands at 0: gravity acts, the earthquake adds only
 // its acceleration at t = 0 (none, for a record that starts at rest) and the
@@ -57,7 +57,6 @@ df::Relaxation Simulation3::relax(bool contacts_stick) {
   auto accept = [&](double dts, double /*moved*/) {
     contacts_.swap(start_contacts_);
     finish_step(d, dts);
-    ++settle_iterations_;
     time_ = 0;
     for (Vector12d& v : velocity_) v.setZero();
   };
@@ -75,7 +74,6 @@ void Simulation3::settle() {
   const std::vector<Vector12d> initial = velocity_;
   for (Vector12d& v : velocity_) v.setZero();
   settling_ = true;
-  settle_iterations_ = 0;
   start_up_ = df::relax_both_phases([this](bool contacts_stick) { return relax(contacts_stick); });
   settling_ = false;
   // A contact last updated with its contacts stuck holds the unbounded

@@ -133,8 +133,8 @@ class Simulation {
   const std::vector<std::vector<BoltSample>>& bolt_histories() const { return bolt_histories_; }
   // Energy (energy.hpp): record 0 is the initial state, then one per step.
   const std::vector<EnergyRecord>& energy_log() const { return energy_log_; }
-  // Settling iterations spent on Control::initial_equilibrium (settle.cpp).
-  int settle_iterations() const { return settle_iterations_; }
+  // Static solves the start-up relaxation accepted, both phases (settle.cpp).
+  int settle_iterations() const { return start_up_.stuck_iterations + start_up_.friction_iterations; }
   // The start-up relaxation of Control::initial_equilibrium, phase by phase
   // (settle.cpp): static solves with every closed contact stuck, then with
   // the friction laws, and whether that second phase found a frictional
@@ -297,7 +297,6 @@ class Simulation {
   bool started_ = false;               // settle() has run (or was not asked for)
   bool settling_ = false;              // before t = 0, relaxing statically (settle.cpp)
   bool settling_stuck_ = false;        // and every closed contact sticks (its first phase)
-  int settle_iterations_ = 0;
   StartUp start_up_;
   df::StartUpObserver start_up_observer_;
 };

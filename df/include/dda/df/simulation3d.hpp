@@ -252,7 +252,8 @@ class Simulation3 {
   const StartUp& start_up() const { return start_up_; }
   // Hears of every accepted solve of the start-up relaxation (start_up.hpp).
   void observe_start_up(df::StartUpObserver observer) { start_up_observer_ = std::move(observer); }
-  int settle_iterations() const { return settle_iterations_; }  // accepted static solves, both phases
+  // Static solves the start-up relaxation accepted, both phases.
+  int settle_iterations() const { return start_up_.stuck_iterations + start_up_.friction_iterations; }
   // Runs the start-up relaxation now if it has not run (the first step
   // otherwise does), so that a caller can report it before the first frame.
   // A run restored from a checkpoint has started and does not relax again.
@@ -346,7 +347,6 @@ class Simulation3 {
   bool started_ = false;         // settle() has run (or was not asked for)
   bool settling_ = false;        // before t = 0, relaxing statically: time stands still
   bool settling_stuck_ = false;  // and every closed contact sticks (its first phase)
-  int settle_iterations_ = 0;
   StartUp start_up_;
   df::StartUpObserver start_up_observer_;
 };
