@@ -39,7 +39,9 @@ double slip(double young, double block, bool initial_equilibrium, double t_end =
   in.measurements.push_back({"slider", test::rotated(Vec2(8 + block / 2, block / 2), a), 1});
   Simulation sim(build_model(in));
   sim.start();
-  if (initial_equilibrium) EXPECT_TRUE(sim.start_up().frictional_equilibrium);
+  if (initial_equilibrium) {
+    EXPECT_TRUE(sim.start_up().frictional_equilibrium);
+  }
   sim.run_until(t_end);
   const auto& h = sim.histories()[0];
   const Vec2 down = test::rotated(Vec2(1, 0), a);
