@@ -69,9 +69,9 @@ void add_inertia(const BlockGeometry3& g, double density, const Vector12d& veloc
   f += (2.0 / dt) * (m * velocity);
 }
 
-void add_elasticity(const BlockGeometry3& g, const Material3& m, const Vector6d& stress, Matrix12d& k,
-                    Vector12d& f) {
-  k += elastic_stiffness(g, m);
+void add_elasticity(const BlockGeometry3& g, const Material3& m, const Vector6d& stress, double damping,
+                    Matrix12d& k, Vector12d& f) {
+  k += (1.0 + damping) * elastic_stiffness(g, m);
   // The stress already carried does work V sigma^T e in the step, so the
   // potential gains +V sigma^T e and its minimum moves F by -V sigma: the
   // same sign as 2D (block_terms.cpp: rhs.tail<3>() -= area * stress).

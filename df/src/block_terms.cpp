@@ -4,7 +4,7 @@
 namespace dda::df {
 
 void add_block_terms(int i, const BlockState& b, const Material& mat, const Matrix3d& emat, const Vec2& gravity,
-                     double dt, BlockSystem& sys) {
+                     double dt, double beta, BlockSystem& sys) {
   const BlockGeometry& g = b.geometry;
   const Matrix6d m = mass_matrix(g, mat.density);
   // Constant acceleration a = 2 (d - v0 dt) / dt^2 within the step: the
@@ -12,8 +12,11 @@ void add_block_terms(int i, const BlockState& b, const Material& mat, const Matr
   sys.diagonal(i) += (2.0 / (dt * dt)) * m;
   sys.rhs(i) += (2.0 / dt) * (m * b.velocity);
   // Constant strain per block: strain energy S/2 e^T E e; the stress
-  // already carried does work S sigma^T e.
-  sys.diagonal(i).bottomRightCorner<3, 3>() += g.area * emat;
+  // already carried does work S sigma^T e. The damping stress beta E de/dt
+  // at the step's mean strain rate (de / dt, as the mean velocity is d / dt)
+  // adds beta/dt times the elastic stiffness and nothing to F: the trapezoidal
+  // rule, unconditionally stable and dissipating beta/dt S de^T E de.
+  sys.diagonal(i).bottomRightCorner<3, 3>() += (1.0 + beta / dt) * g.area * emat;
   sys.rhs(i).tail<3>() -= g.area * b.stress;
   // Body force: integral of T^T rho b is rho b S on the translations only
   // (the first moments about the centroid vanish).

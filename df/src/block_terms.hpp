@@ -5,10 +5,11 @@
 
 namespace dda::df {
 
-// Inertia (constant acceleration in the step), elasticity, the stress carried
+// Inertia (constant acceleration in the step), elasticity with its viscous
+// damping (C = beta K_e, damping.hpp; beta 0 for none), the stress carried
 // from earlier steps and the body force of block i.
 void add_block_terms(int i, const BlockState& b, const Material& mat, const Matrix3d& emat, const Vec2& gravity,
-                     double dt, BlockSystem& sys);
+                     double dt, double beta, BlockSystem& sys);
 
 // Penalty spring p pulling material point `at` of block i by `gap` (the
 // prescribed displacement of the step): energy p/2 |T d - gap|^2.

@@ -39,6 +39,7 @@ struct Parsed3 {
   int max_open_close = 10;
   std::string solver = "auto";
   bool initial_equilibrium = false;
+  df::ViscousDamping damping;
   std::optional<double> normal_penalty, shear_penalty, contact_reach;
 };
 
@@ -119,7 +120,7 @@ void read_loading3(const YamlNode& root, Parsed3& p) {
 void read_control3(const YamlNode& root, Parsed3& p) {
   const YamlNode c = root.child("control");
   std::vector<std::string> keys{"max_open_close", "normal_penalty", "shear_penalty", "contact_reach", "solver",
-                                "initial_equilibrium"};
+                                "initial_equilibrium", "damping"};
   keys.insert(keys.end(), std::begin(df::kRunLengthKeys), std::end(df::kRunLengthKeys));
   c.allow(keys);
   const Control3 defaults3;
@@ -133,6 +134,7 @@ void read_control3(const YamlNode& root, Parsed3& p) {
   if (c.has("contact_reach")) p.contact_reach = c.number("contact_reach", Range::positive());
   p.solver = c.choice("solver", {"auto", "cholmod", "pcg"}, "auto");
   p.initial_equilibrium = c.flag("initial_equilibrium", false);
+  p.damping = df::read_damping(c);
 }
 
 Parsed3 parse(const YamlNode& root) {
@@ -330,6 +332,7 @@ DfScenario3 read_df3_scenario(const YamlNode& root, const PolyhedronModel& block
   c.min_dt_ratio = p.run.min_dt_ratio;
   c.solver = p.solver;
   c.initial_equilibrium = p.initial_equilibrium;
+  c.damping = p.damping;
   m.max_iterations = p.max_open_close;
   m.normal_penalty = p.normal_penalty ? *p.normal_penalty : default_normal_penalty(m);
   m.shear_penalty = p.shear_penalty ? *p.shear_penalty : m.normal_penalty;

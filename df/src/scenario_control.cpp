@@ -21,6 +21,18 @@ RunLength read_run_length(const YamlNode& c, const RunLength& defaults) {
   return r;
 }
 
+ViscousDamping read_damping(const YamlNode& control) {
+  ViscousDamping d;
+  const auto node = control.optional_child("damping");
+  if (!node) return d;
+  node->allow({"ratio", "frequency"});
+  // Below 1: an overdamped deformation is no use to anyone, and a ratio
+  // given in per cent (5 for 5 %) is caught here.
+  d.ratio = node->number("ratio", Range::half_open(0, 1));
+  d.frequency = node->number("frequency", Range::positive());
+  return d;
+}
+
 OutputSchedule resolve_output_schedule(OutputSchedule s, double total_time, int steps) {
   if (s.interval > 0 || s.every > 0) return s;
   if (total_time > 0)

@@ -4,6 +4,7 @@
 // step control and the frame schedule. Each dimension reads its own keys
 // (penalties, solver, ...) besides these.
 #include "dda/common/yaml_reader.hpp"
+#include "dda/df/damping.hpp"
 #include "dda/df/scenario.hpp"
 
 namespace dda::df {
@@ -23,5 +24,9 @@ inline constexpr const char* kRunLengthKeys[] = {"dt",           "total_time",  
 
 // Reads them from `control`; the defaults are those of `defaults`.
 RunLength read_run_length(const YamlNode& control, const RunLength& defaults = {});
+
+// `control.damping: {ratio, frequency}` (damping.hpp); none when absent.
+// Its key is "damping" (for YamlNode::allow).
+ViscousDamping read_damping(const YamlNode& control);
 
 }  // namespace dda::df

@@ -236,7 +236,8 @@ Parsed parse(const YamlNode& root) {
   // control
   const YamlNode c = root.child("control");
   std::vector<std::string> keys{"w0", "dynamic", "max_open_close", "penalty_factor", "shear_ratio",
-                                "fixed_penalty_factor", "solver", "initial_equilibrium", "contact_clusters"};
+                                "fixed_penalty_factor", "solver", "initial_equilibrium", "contact_clusters",
+                                "damping"};
   keys.insert(keys.end(), std::begin(kRunLengthKeys), std::end(kRunLengthKeys));
   c.allow(keys);
   Control& ctl = p.control;
@@ -252,6 +253,7 @@ Parsed parse(const YamlNode& root) {
   p.output = run.output;
   if (c.has("w0")) ctl.w0 = c.number("w0", Range::positive());
   ctl.dynamic = c.number("dynamic", ctl.dynamic, Range::closed(0, 1));
+  ctl.damping = read_damping(c);
   ctl.max_open_close = static_cast<int>(c.integer("max_open_close", ctl.max_open_close, Range::closed(1, 1000)));
   ctl.penalty_factor = c.number("penalty_factor", ctl.penalty_factor, Range::positive());
   ctl.shear_ratio = c.number("shear_ratio", ctl.shear_ratio, Range::positive());

@@ -230,7 +230,7 @@ void Simulation::assemble(double dt, const std::vector<Contact>& contacts, std::
 #pragma omp parallel for schedule(static) if (model_.block_count() > parallel_grain())
   for (int i = 0; i < model_.block_count(); ++i) {
     const int m = model_.block_material[i];
-    add_block_terms(i, blocks_[i], model_.materials[m], emat_[m], model_.gravity, dt, system_);
+    add_block_terms(i, blocks_[i], model_.materials[m], emat_[m], model_.gravity, dt, damping_beta(), system_);
   }
   for (std::size_t k = 0; k < model_.fixed_points.size(); ++k) {
     const FixedPoint& f = model_.fixed_points[k];

@@ -186,7 +186,7 @@ void Simulation3::assemble(double dt) {
     Vector12d f = Vector12d::Zero();
     const Material3& material = model_.material_of(static_cast<std::size_t>(b));
     add_inertia(g, material.density, velocity_[b], dt, k, f);
-    add_elasticity(g, material, stress_[b], k, f);
+    add_elasticity(g, material, stress_[b], settling_ ? 0.0 : model_.control.damping.beta() / dt, k, f);
     add_body_force(g, material.density, body_acceleration_, f);
     add_point_terms(b, dt, g, k, f);
     sys.add_k(b, b, k);

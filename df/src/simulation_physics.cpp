@@ -128,18 +128,22 @@ void Simulation::before_accept(double dt, const Eigen::VectorXd& d) {
   // order (the same on any number of threads).
   const int nb = model_.block_count();
   std::vector<double> twice_kinetic(nb);  // v1' M v1
+  std::vector<double> viscous(nb);        // the work of the damping stress, beta/dt S de' E de
+  const double beta = damping_beta();
 #pragma omp parallel for schedule(static) if (nb > parallel_grain())
   for (int i = 0; i < nb; ++i) {
     const BlockState& b = blocks_[i];
-    const Material& mat = model_.materials[model_.block_material[i]];
+    const int m = model_.block_material[i];
     const Vector6d v1 = 2.0 / dt * di(i) - b.velocity;
-    twice_kinetic[i] = v1.dot(mass_matrix(b.geometry, mat.density) * v1);
+    twice_kinetic[i] = v1.dot(mass_matrix(b.geometry, model_.materials[m].density) * v1);
+    const Vector3d de = di(i).tail<3>();
+    viscous[i] = beta / dt * b.geometry.area * de.dot(emat_[m] * de);
   }
   for (int i = 0; i < nb; ++i) {
     const BlockState& b = blocks_[i];
     const Material& mat = model_.materials[model_.block_material[i]];
     const double k = model_.control.dynamic;
-    e.damping += (1 - k * k) * 0.5 * twice_kinetic[i];
+    e.damping += (1 - k * k) * 0.5 * twice_kinetic[i] + viscous[i];
     e.gravity_work += b.geometry.area * mat.density * model_.gravity.dot(di(i).head<2>());
   }
   for (std::size_t k = 0; k < model_.loads.size(); ++k) {

@@ -172,7 +172,7 @@ TEST(Block3Kinematics, InitialStressIsReleasedByAFreeBlock) {
   sigma << -1e6, 2e5, 3e5, 4e4, -5e4, 6e4;
   Matrix12d k = Matrix12d::Zero();
   Vector12d f = Vector12d::Zero();
-  add_elasticity(g, mat, sigma, k, f);
+  add_elasticity(g, mat, sigma, 0.0, k, f);
   EXPECT_LE((f.segment<6>(kStrain) + g.volume * sigma).norm(), 1e-12 * g.volume * sigma.norm());
   EXPECT_EQ(f.head<6>().norm(), 0.0);
   const Vector6d strain = k.block<6, 6>(kStrain, kStrain).llt().solve(f.segment<6>(kStrain));

@@ -16,6 +16,7 @@
 
 #include "commands.hpp"
 #include "dda/common/yaml_reader.hpp"
+#include "dda/df/damping.hpp"
 #include "dda/df/energy.hpp"
 #include "dda/df/results.hpp"
 #include "pipeline.hpp"
@@ -187,6 +188,15 @@ void run_session(Sim& sim, Results& results, const OutputOptions& output, const 
                            " % of the velocity from one step to the next: it damps every motion, and caps a free "
                            "fall at g dt / (1 - dynamic) = " + num(g * c.dt / (1 - k)) + " m/s at dt " + num(c.dt) +
                            " s; give 1 (the default) where the motion matters\n");
+  }
+  if (const df::ViscousDamping& v = sim.model().control.damping; v.on()) {
+    // Stiffness-proportional damping is a ratio at one frequency only: say
+    // what other frequencies get, so nobody reads it as frequency-free.
+    say(stage.quiet, "DF: viscous damping " + num(100 * v.ratio) + " % of critical at " + num(v.frequency) +
+                         " Hz on the blocks' deformation (beta = " + num(v.beta()) + " s; " +
+                         num(100 * v.ratio_at(v.frequency / 2)) + " % at " + num(v.frequency / 2) + " Hz, " +
+                         num(100 * v.ratio_at(2 * v.frequency)) + " % at " + num(2 * v.frequency) +
+                         " Hz); rigid motion and the contact springs are not damped\n");
   }
   if constexpr (requires { sim.start_up(); }) {
     // The start-up relaxation runs before frame 0, so that the first frame

@@ -76,8 +76,10 @@ void add_inertia(const BlockGeometry3& g, double density, const Vector12d& veloc
                  Vector12d& f);
 // Elasticity and the stress carried from earlier steps
 // ([sx, sy, sz, tyz, tzx, txy]): K += V D on the strains, F -= V sigma.
-void add_elasticity(const BlockGeometry3& g, const Material3& m, const Vector6d& stress, Matrix12d& k,
-                    Vector12d& f);
+// `damping` = beta / dt of the viscous damping (damping.hpp; 0 for none):
+// its stress beta D de/dt at the step's mean strain rate adds damping V D.
+void add_elasticity(const BlockGeometry3& g, const Material3& m, const Vector6d& stress, double damping,
+                    Matrix12d& k, Vector12d& f);
 // Body force b (m/s^2): F += rho V b on the translations only.
 void add_body_force(const BlockGeometry3& g, double density, const Vec3& b, Vector12d& f);
 // Constant force P at point x: F += T(x)^T P.

@@ -12,7 +12,8 @@
 // a body acceleration, m b . centroid displacement, e.g. an earthquake).
 // Losses that are accounted for: friction (sliding force times slip at every
 // sliding contact), damping (the kinetic energy a dynamic parameter k < 1
-// removes, (1 - k^2) of it), breakage (energy released by broken bolts) and
+// removes, (1 - k^2) of it, plus the work of the blocks' viscous damping,
+// beta/dt S de^T E de a step, control.damping), breakage (energy released by broken bolts) and
 // radiation (what the viscous boundaries let out of the model; the work of
 // an incident wave's traction on them counts with the loads).
 // residual = input work - (stored - stored at the start) - friction -

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "dda/common/block_model.hpp"
+#include "dda/df/damping.hpp"
 #include "dda/df/types.hpp"
 
 namespace dda::df {
@@ -152,6 +153,7 @@ struct Control {
   double max_displacement_ratio = 0.01;  // g2: no vertex moves more than g2 * w0 per step
   std::optional<double> w0;          // m; default half the model height
   double dynamic = 1.0;              // k in [0, 1]: fraction of the end velocity carried on
+  ViscousDamping damping;            // of the blocks' deformation (damping.hpp); none by default
   int max_open_close = 6;            // open-close iterations before dt is cut
   // Settle state changes on the blocks around them between global solves
   // (contact_clusters.cpp); false: every iterate solves the whole system.

@@ -244,6 +244,9 @@ class Simulation {
   // than the tolerance (start_up_relax.hpp's rules).
   Relaxation relax(bool contacts_stick);
   void check_runaway(const Eigen::VectorXd& d, double moved, double dt, bool at_min_dt) const;
+  // s, beta of the blocks' viscous damping in this step: none while
+  // relaxing before t = 0, whose pseudo steps are not time.
+  double damping_beta() const { return settling_ ? 0.0 : model_.control.damping.beta(); }
   // Dashpot matrix of a viscous boundary edge in the current configuration,
   // and the traction from outside on it during the step [time_, time_ + dt].
   Eigen::Matrix2d edge_dashpot(const ViscousEdge& e) const;

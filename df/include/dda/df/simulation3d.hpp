@@ -26,6 +26,7 @@
 #include "dda/common/polyhedron_model.hpp"
 #include "dda/df/block3d.hpp"
 #include "dda/df/contact3d_geometry.hpp"
+#include "dda/df/damping.hpp"
 #include "dda/df/friction.hpp"
 #include "dda/df/ground_motion3.hpp"
 #include "dda/df/points3d.hpp"
@@ -42,6 +43,7 @@ struct Control3 {
   int steps = 0;
   double max_displacement_ratio = 0.01; // no vertex moves more than this times w0 in a step (else dt is cut)
   double min_dt_ratio = 1e-3;           // dt is never cut below this times dt
+  df::ViscousDamping damping;           // of the blocks' deformation (damping.hpp); none by default
   // Linear solver (linear_solver.hpp): "cholmod", "pcg" (12x12 block-Jacobi
   // conjugate gradients, warm-started) or "auto": CHOLMOD below
   // kAutoPcgBlocks3 (80) free blocks, PCG from there on.
