@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <vector>
 
 #include "df_test_models.hpp"
 #include "dda/df/simulation.hpp"
@@ -24,7 +25,8 @@ constexpr double kAlpha = 30.0;  // degrees
 // Slip along the slope between t = 0 and t = t_end, m (downhill negative).
 // The run's histories start at t = 0, after the start-up relaxation, so
 // this is the motion of the dynamic run alone.
-double slip(double young, double block, bool initial_equilibrium, double t_end = 2.0, double dt = 1e-3) {
+double slip(double young, double block, bool initial_equilibrium, double t_end = 2.0, double dt = 1e-3,
+            ViscousDamping damping = {}) {
   const double a = deg2rad(kAlpha);
   ModelInput in;
   in.geometry.blocks.push_back(test::make_block(test::rotated(test::rectangle(0, -2, 16, 2), a)));
@@ -35,6 +37,7 @@ double slip(double young, double block, bool initial_equilibrium, double t_end =
   in.joint_sets = {j};
   in.control.dt = dt;
   in.control.initial_equilibrium = initial_equilibrium;
+  in.control.damping = damping;
   for (const double x : {1.0, 8.0, 15.0}) in.fixed_points.push_back({"base", test::rotated(Vec2(x, -1), a), 0, {}});
   in.measurements.push_back({"slider", test::rotated(Vec2(8 + block / 2, block / 2), a), 1});
   Simulation sim(build_model(in));
@@ -67,6 +70,23 @@ TEST_P(FrictionLimit, BlockStaysAfterTheStartUpRelaxation) {
 
 INSTANTIATE_TEST_SUITE_P(Rocks, FrictionLimit,
                          ::testing::Values(Rock{5e10, 1}, Rock{5e10, 5}, Rock{1e9, 1}, Rock{1e9, 5}));
+
+// Loads switched on at t = 0 make the 5 m block of 1 GPa rock walk 0.24 m
+// down the plane (docs/solver2d.md, "Friction at its limit"): the undamped
+// bounce into its springs. Viscous damping of the blocks' deformation
+// (control.damping) takes the energy out of that bounce, so the walk must
+// shrink as the ratio grows (measured at 5 Hz, near the block's rocking on
+// its springs: 0.243 m, 16 mm, 8.3 mm, 2.1 mm for 0, 2, 5, 20 %), and 5 %
+// must cut it at least tenfold.
+TEST(FrictionLimitDamped, ViscousDampingHoldsBackTheWalkOfSuddenLoads) {
+  std::vector<double> walk;
+  for (const double ratio : {0.0, 0.02, 0.05, 0.2}) {
+    walk.push_back(std::abs(slip(1e9, 5, false, 2.0, 1e-3, {ratio, 5.0})));
+    std::printf("loads at t = 0, damping %.2f at 5 Hz: slip %.3e m in 2 s\n", ratio, walk.back());
+  }
+  for (std::size_t k = 1; k < walk.size(); ++k) EXPECT_LT(walk[k], walk[k - 1]) << "ratio " << k;
+  EXPECT_LT(walk[2], 0.1 * walk[0]);
+}
 
 }  // namespace
 }  // namespace dda::df

@@ -367,6 +367,37 @@ case_df_start_lines() {
   ! grep -q "initial equilibrium\|dynamic" out.txt || fail "f.yaml said: $(cat out.txt)"
 }
 
+case_df_damping() {
+  # control.damping: the run states what it gives, checked by hand: 5 % of
+  # critical at 4 Hz is beta = 0.05 / (pi 4) = 0.00397887 s, and
+  # stiffness-proportional damping gives 2.5 % at 2 Hz and 10 % at 8 Hz.
+  write_incline
+  sed 's/dt: 0.001, total_time: 1.0/dt: 0.001, damping: {ratio: 0.05, frequency: 4}, total_time: 0.01/' \
+    incline.yaml > s.yaml
+  "$DDA" dl incline.yaml -o lines.h5 -q && "$DDA" dc lines.h5 -o blocks.h5 -q || fail "dl, dc"
+  "$DDA" df s.yaml --blocks blocks.h5 -o r.h5 > out.txt 2> err.txt || fail "df: $(cat err.txt)"
+  grep -q "^DF: viscous damping 5 % of critical at 4 Hz on the blocks' deformation (beta = 0.00397887 s; 2.5 % at 2 Hz, 10 % at 8 Hz); rigid motion and the contact springs are not damped$" out.txt \
+    || fail "no damping line: $(cat out.txt)"
+  # Without it, nothing is said.
+  sed 's/dt: 0.001, total_time: 1.0/dt: 0.001, total_time: 0.01/' incline.yaml > n.yaml
+  "$DDA" df n.yaml --blocks blocks.h5 -o n.h5 > out.txt 2> err.txt || fail "df n.yaml: $(cat err.txt)"
+  ! grep -q "viscous damping" out.txt || fail "n.yaml said: $(cat out.txt)"
+  # Bad input: a ratio in per cent, a missing frequency, an unknown key.
+  sed 's/damping: {ratio: 0.05,/damping: {ratio: 5,/' s.yaml > b1.yaml
+  expect_error 1 "b1.yaml:[0-9]+: control.damping.ratio must be in \[0, 1\), got 5\.$" -- \
+    "$DDA" df b1.yaml --blocks blocks.h5 -o b.h5
+  sed 's/damping: {ratio: 0.05, frequency: 4}/damping: {ratio: 0.05}/' s.yaml > b2.yaml
+  expect_error 1 "b2.yaml:[0-9]+: required key 'control.damping.frequency' is missing\\.$" -- "$DDA" df b2.yaml --blocks blocks.h5 -o b.h5
+  sed 's/frequency: 4}/frequency: 4, mass: 0.1}/' s.yaml > b3.yaml
+  expect_error 1 "b3.yaml:[0-9]+: unknown key 'control.damping.mass'; allowed keys here are ratio, frequency\\.$" -- "$DDA" df b3.yaml --blocks blocks.h5 -o b.h5
+  # 3D reads the same key and says the same line.
+  sed 's/control: {dt: 0.001, total_time: 1,/control: {dt: 0.001, total_time: 0.01, damping: {ratio: 0.05, frequency: 4},/' \
+    "$SRC/tests/data/df3_incline.yaml" > s3.yaml
+  grep -q "damping:" s3.yaml || fail "the 3D scenario edit did not apply"
+  "$DDA" run s3.yaml -o out3 --no-vtk --no-plots > out.txt 2> err.txt || fail "run 3D: $(cat err.txt)"
+  grep -q "^DF: viscous damping 5 % of critical at 4 Hz" out.txt || fail "no 3D damping line: $(cat out.txt)"
+}
+
 case_df_friction_limit() {
   # The incline's slider, of soft rock (E 1 GPa, the scenario default),
   # with friction 0.1 degree above its 30-degree slope (factor of safety
