@@ -7,6 +7,7 @@
 
 #include "dda/common/error.hpp"
 #include "dda/df/friction.hpp"
+#include "dda/df/time_step.hpp"
 
 namespace dda::df {
 namespace {
@@ -66,7 +67,8 @@ void check_joint(const JointProperties& j, const std::string& w) {
 }
 
 void check_control(const Control& c) {
-  require(std::isfinite(c.dt) && c.dt > 0, "The time step dt must be positive (got " + num(c.dt) + " s).");
+  require(std::isfinite(c.dt) && c.dt >= 0,
+          "The time step dt must be positive, or 0 to take it from the model (got " + num(c.dt) + " s).");
   require(std::isfinite(c.total_time) && c.total_time >= 0, "The total time must not be negative.");
   require(c.steps >= 0, "The number of steps must not be negative.");
   require(std::isfinite(c.max_displacement_ratio) && c.max_displacement_ratio > 0 && c.max_displacement_ratio < 1,
@@ -123,6 +125,33 @@ void add_points_from_block_model(const BlockModel& geometry, const std::map<std:
         break;  // consumed by the cutter
     }
   }
+}
+
+void choose_time_step(ModelInput& in, double record_interval) {
+  if (in.control.dt != 0) return;
+  std::vector<BlockCrossing> blocks;
+  for (std::size_t b = 0; b < in.geometry.blocks.size(); ++b) {
+    const std::size_t k = in.block_material.empty() ? 0 : static_cast<std::size_t>(in.block_material[b]);
+    if (k >= in.materials.size()) continue;  // build_model says what is wrong with it
+    const Material& mat = in.materials[k];
+    blocks.push_back({std::sqrt(std::max(0.0, signed_area(in.geometry.blocks[b].vertices))),
+                      p_wave_speed(mat.young, mat.poisson, mat.density, mat.plane == PlaneMode::Stress)});
+  }
+  // The loading tables' shortest sample interval (0: none).
+  double interval = record_interval;
+  auto take = [&](const std::vector<double>& t) {
+    const double d = shortest_interval(t);
+    if (d > 0) interval = interval > 0 ? std::min(interval, d) : d;
+  };
+  for (const FixedPoint& f : in.fixed_points)
+    if (f.history) take(f.history->t);
+  for (const PointLoad& l : in.loads)
+    if (l.history) take(l.history->t);
+  if (in.body_acceleration) take(in.body_acceleration->history.t);
+  if (in.viscous_boundary) take(in.viscous_boundary->incident_velocity.t);
+  const TimeStepChoice choice = default_time_step(blocks, interval);
+  in.control.dt = choice.dt;
+  in.control.dt_basis = choice.basis;
 }
 
 Model build_model(ModelInput in) {
@@ -249,6 +278,7 @@ Model build_model(ModelInput in) {
       for (const Vec2& v : b.vertices) lo = std::min(lo, v.y()), hi = std::max(hi, v.y());
     in.control.w0 = 0.5 * (hi - lo);
   }
+  choose_time_step(in);
   m.control = in.control;
   m.search_distance = 2.5 * m.control.max_displacement_ratio * *m.control.w0;
   m.contact_tolerance = 1e-12 * *m.control.w0;

@@ -11,6 +11,7 @@
 
 #include "dda/common/error.hpp"
 #include "dda/df/ground_motion.hpp"
+#include "dda/df/time_step.hpp"
 #include "scenario3d_detail.hpp"
 #include "scenario_control.hpp"
 #include "scenario_joints.hpp"
@@ -303,7 +304,7 @@ void check_df3_scenario(const YamlNode& root) {
 
 DfScenario3 read_df3_scenario(const YamlNode& root, const PolyhedronModel& blocks, const std::string& blocks_path) {
   if (!root.has("control"))
-    root.fail_key("control", "is required for a forward run (it gives the time step and the run length)");
+    root.fail_key("control", "is required for a forward run (it gives the run length)");
   const Parsed3 p = parse(root);
   if (blocks.blocks.empty())
     throw InputError(blocks_path + ": has no blocks, so there is nothing to run (did the excavations remove "
@@ -326,6 +327,18 @@ DfScenario3 read_df3_scenario(const YamlNode& root, const PolyhedronModel& block
   }
   Control3& c = m.control;
   c.dt = p.run.dt;
+  if (c.dt == 0) {  // not given: from the free blocks and the earthquake record (time_step.hpp)
+    std::vector<df::BlockCrossing> crossings;
+    for (std::size_t b = 0; b < m.blocks.size(); ++b)
+      if (!m.fixed[b]) {
+        const Material3& mat = m.material_of(b);
+        crossings.push_back({std::cbrt(m.blocks[b].volume), df::p_wave_speed(mat.young, mat.poisson, mat.density, false)});
+      }
+    const double record = m.earthquake.motion ? df::shortest_interval(m.earthquake.motion->times()) : 0.0;
+    const df::TimeStepChoice choice = df::default_time_step(crossings, record);
+    c.dt = choice.dt;
+    c.dt_basis = choice.basis;
+  }
   c.total_time = p.run.total_time;
   c.steps = p.run.steps;
   c.max_displacement_ratio = p.run.max_displacement_ratio;

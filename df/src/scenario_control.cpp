@@ -7,7 +7,8 @@ namespace dda::df {
 
 RunLength read_run_length(const YamlNode& c, const RunLength& defaults) {
   RunLength r = defaults;
-  r.dt = c.number("dt", Range::positive());
+  // Absent: 0, chosen from the model when it is built (time_step.hpp).
+  r.dt = c.has("dt") ? c.number("dt", Range::positive()) : 0.0;
   if (c.one_of({"total_time", "steps"}) == "total_time")
     r.total_time = c.number("total_time", Range::positive());
   else

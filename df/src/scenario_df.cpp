@@ -9,6 +9,7 @@
 
 #include "dda/common/error.hpp"
 #include "dda/df/scenario.hpp"
+#include "dda/df/time_step.hpp"
 #include "scenario_earthquake.hpp"
 #include "scenario_control.hpp"
 #include "scenario_joints.hpp"
@@ -376,7 +377,7 @@ void check_blocks_for_df(const BlockModel& blocks, const std::string& blocks_pat
 
 DfScenario read_df_scenario(const YamlNode& root, const BlockModel& blocks, const std::string& blocks_path) {
   if (!root.has("control"))
-    root.fail_key("control", "is required for a forward run (it gives the time step and the run length)");
+    root.fail_key("control", "is required for a forward run (it gives the run length)");
   const Parsed p = parse(root);
   check_blocks_for_df(blocks, blocks_path, root);
 
@@ -470,7 +471,11 @@ DfScenario read_df_scenario(const YamlNode& root, const BlockModel& blocks, cons
   const ViscousSides viscous = add_viscous_boundary(blocks, p.viscous_sides, p.free_field_sides, in);
   if (p.viscous_node && !in.viscous_boundary->edges.size())
     p.viscous_node->fail("holds nothing: no block has a domain-boundary edge on those sides");
-  if (p.earthquake) apply_earthquake(*p.earthquake, p.fixed_sides, viscous, in);  // needs every fixed point
+  if (p.earthquake) {
+    // The modes refine the record to the step: the step first.
+    choose_time_step(in, shortest_interval(p.earthquake->motion.t));
+    apply_earthquake(*p.earthquake, p.fixed_sides, viscous, in);  // needs every fixed point
+  }
 
   // Bolts: both ends must lie in blocks, and in different ones.
   for (const auto& [node, bolt] : p.bolts) {

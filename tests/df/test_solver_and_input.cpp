@@ -94,8 +94,8 @@ TEST(ModelInput, BadInputGivesOneSentence) {
   expect_input_error(in, "non-positive density");
 
   in = valid_input();
-  in.control.dt = 0;
-  expect_input_error(in, "time step dt must be positive");
+  in.control.dt = -1;
+  expect_input_error(in, "time step dt must be positive, or 0 to take it from the model");
 
   in = valid_input();
   in.measurements.push_back({"m1", {5, 5}, -1});

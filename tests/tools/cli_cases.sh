@@ -398,6 +398,44 @@ case_df_damping() {
   grep -q "^DF: viscous damping 5 % of critical at 4 Hz" out.txt || fail "no 3D damping line: $(cat out.txt)"
 }
 
+case_df_default_dt() {
+  # control.dt not given: the P-wave crossing time of the median block,
+  # worked by hand. 2D incline: slider 1 x 1 m and slab of 8 m^2, the lower
+  # median of two is the slider; E 50 GPa, nu 0.25, rho 2000, plane stress:
+  # c = sqrt(E / (1 - nu^2) / rho) = 5164 m/s, dt = 1 / 5164 = 0.000193649 s.
+  write_incline
+  "$DDA" dl incline.yaml -o lines.h5 -q && "$DDA" dc lines.h5 -o blocks.h5 -q || fail "dl, dc"
+  sed 's/dt: 0.001, total_time: 1.0/total_time: 0.01/' incline.yaml > s.yaml
+  "$DDA" df s.yaml --blocks blocks.h5 -o r.h5 > out.txt 2> err.txt || fail "df: $(cat err.txt)"
+  grep -q "^DF: dt 0.000193649 s from the model (control.dt not given): a P wave (5.16e+03 m/s) crosses the median block (1 m) in 0.000194 s$" out.txt \
+    || fail "no 2D dt line: $(cat out.txt)"
+  # Given, nothing is said about it.
+  "$DDA" df incline.yaml --blocks blocks.h5 -o g.h5 --stop-at-step 1 > out.txt 2> err.txt || fail "df given: $(cat err.txt)"
+  ! grep -q "from the model" out.txt || fail "a given dt was explained: $(cat out.txt)"
+  # The soft slider at friction 0.1 degree above its slope (as
+  # df_friction_limit) with no control tuning at all, the step included,
+  # stays: under 1e-4 m in 1 s (E 1 GPa: c = 730.30 m/s, dt = 1 / 730.30 = 0.00136931 s).
+  sed -e 's/interface: {friction_deg: 20}/interface: {friction_deg: 30.1}/' -e 's/young: 5.0e10/young: 1.0e9/' \
+    -e 's/dt: 0.001, total_time: 1.0/total_time: 1.0/' incline.yaml > soft.yaml
+  "$DDA" run soft.yaml -o soft --no-vtk --no-plots > out.txt 2> err.txt || fail "run soft: $(cat err.txt)"
+  grep -q "^DF: dt 0.00136931 s from the model" out.txt || fail "soft dt: $(cat out.txt)"
+  "$DDA" history soft/results.h5 --csv --point slider > h.csv || fail "history"
+  /usr/bin/python3 - h.csv <<'PY' || fail "the slider moved"
+import csv, math, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+first, last = rows[0], rows[-1]
+moved = math.hypot(float(last["slider.ux"]) - float(first["slider.ux"]), float(last["slider.uy"]) - float(first["slider.uy"]))
+print("slider moved %.3e m in %s s at the default dt" % (moved, last["t"]))
+assert float(last["t"]) >= 1 - 1e-9 and moved < 1e-4, moved
+PY
+  # 3D incline: the slider is 27 m^3 (3 m), E 10 GPa, nu 0.25, rho 2600:
+  # c = sqrt(E (1 - nu) / ((1 + nu)(1 - 2 nu)) / rho) = 2148.3 m/s, dt = 3 / 2148.3 = 0.00139642 s.
+  sed 's/control: {dt: 0.001, total_time: 1,/control: {total_time: 0.01,/' "$SRC/tests/data/df3_incline.yaml" > s3.yaml
+  "$DDA" run s3.yaml -o out3 --no-vtk --no-plots > out.txt 2> err.txt || fail "run 3D: $(cat err.txt)"
+  grep -q "^DF: dt 0.00139642 s from the model (control.dt not given): a P wave (2.15e+03 m/s) crosses the median block (3 m) in 0.0014 s$" out.txt \
+    || fail "no 3D dt line: $(cat out.txt)"
+}
+
 case_df_friction_limit() {
   # The incline's slider, of soft rock (E 1 GPa, the scenario default),
   # with friction 0.1 degree above its 30-degree slope (factor of safety

@@ -151,6 +151,9 @@ std::string contact_settings(const Sim& sim) {
            " N/m (per contact point); dt " + num(m.control.dt) + " s; up to " + std::to_string(m.max_iterations) +
            " open-close iterations a step";
   }
+  // A step the model chose says why, so that a user can judge it.
+  if (!m.control.dt_basis.empty())
+    line += "\nDF: dt " + num(m.control.dt) + " s from the model (control.dt not given): " + m.control.dt_basis;
   return line;
 }
 

@@ -32,6 +32,7 @@ class GroundMotion3 {
   Vec3 mean_acceleration(double t0, double t1) const;
   double start() const { return t_.front(); }
   double end() const { return t_.back(); }
+  const std::vector<double>& times() const { return t_; }  // the samples' (for the default time step)
 
  private:
   // Index k of the interval [t_k, t_k+1] holding t (t inside the record).

@@ -147,7 +147,8 @@ struct MeasurementPoint {
 };
 
 struct Control {
-  double dt = 0;                     // s, the largest (and first) time step
+  double dt = 0;                     // s, the largest (and first) time step; 0: from the model (time_step.hpp)
+  std::string dt_basis;              // choose_time_step: why the model chose dt (empty when it was given)
   double total_time = 0;             // s; run() stops here (or after `steps`)
   int steps = 0;                     // used by run() when total_time is 0
   double max_displacement_ratio = 0.01;  // g2: no vertex moves more than g2 * w0 per step
@@ -243,5 +244,12 @@ struct Model {
 
 // Validates the input and resolves defaults; throws InputError.
 Model build_model(ModelInput input);
+
+// control.dt 0 (not given): sets it from the model (time_step.hpp: the
+// P-wave crossing time of the median block, or the loading tables' shortest
+// sample interval, or `record_interval`, if shorter) with its dt_basis.
+// build_model() calls it; a reader calls it first when something it builds
+// depends on dt (an earthquake record refined to the step).
+void choose_time_step(ModelInput& in, double record_interval = 0);
 
 }  // namespace dda::df

@@ -39,6 +39,7 @@ namespace dda::df3 {
 // Time stepping of Simulation3::advance / run (the 2D Control's rules).
 struct Control3 {
   double dt = 1e-3;                     // s, the step it starts with and grows back to
+  std::string dt_basis;                 // why the model chose dt (time_step.hpp); empty when the scenario gave it
   double total_time = 0;                // s, the run's end (or `steps`)
   int steps = 0;
   double max_displacement_ratio = 0.01; // no vertex moves more than this times w0 in a step (else dt is cut)

@@ -1,0 +1,62 @@
+// The default time step (time_step.hpp).
+#include "dda/df/time_step.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "dda/common/error.hpp"
+
+namespace dda::df {
+namespace {
+
+// Three digits: the sentence explains a choice, it is not the number used.
+std::string num(double v) {
+  std::ostringstream s;
+  s.precision(3);
+  s << v;
+  return s.str();
+}
+
+}  // namespace
+
+double p_wave_speed(double young, double poisson, double density, bool plane_stress) {
+  const double m = plane_stress ? young / (1 - poisson * poisson)
+                                : young * (1 - poisson) / ((1 + poisson) * (1 - 2 * poisson));
+  return std::sqrt(m / density);
+}
+
+TimeStepChoice default_time_step(std::vector<BlockCrossing> blocks, double loading_interval) {
+  std::vector<double> crossing;
+  for (const BlockCrossing& b : blocks)
+    if (b.size > 0 && b.speed > 0 && std::isfinite(b.size / b.speed)) crossing.push_back(b.size / b.speed);
+  if (crossing.empty()) throw InputError("No block has a size and a wave speed to choose the time step from; give control.dt.");
+  // The median, not the smallest: cutting leaves slivers, and one sliver
+  // must not set the step of a whole model. Of an even count, the lower one.
+  const auto mid = crossing.begin() + static_cast<std::ptrdiff_t>((crossing.size() - 1) / 2);
+  std::nth_element(crossing.begin(), mid, crossing.end());
+  const double t_block = *mid;
+  std::size_t median_index = 0;
+  for (std::size_t k = 0; k < blocks.size(); ++k)
+    if (blocks[k].size > 0 && blocks[k].speed > 0 && blocks[k].size / blocks[k].speed == t_block) median_index = k;
+  const std::string crossing_text = "a P wave (" + num(blocks[median_index].speed) + " m/s) crosses the median block (" +
+                                    num(blocks[median_index].size) + " m) in " + num(t_block) + " s";
+  TimeStepChoice c;
+  if (loading_interval > 0 && loading_interval < t_block) {
+    c.dt = loading_interval;
+    c.basis = "the loading's sample interval, " + num(loading_interval) + " s (" + crossing_text + ")";
+  } else {
+    c.dt = t_block;
+    c.basis = crossing_text;
+  }
+  return c;
+}
+
+double shortest_interval(const std::vector<double>& times) {
+  double out = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 1; k < times.size(); ++k) out = std::min(out, times[k] - times[k - 1]);
+  return std::isfinite(out) ? out : 0.0;
+}
+
+}  // namespace dda::df
