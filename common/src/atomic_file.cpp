@@ -1,5 +1,6 @@
 #include "dda/common/atomic_file.hpp"
 
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -37,6 +38,18 @@ std::string reason_of(const std::error_code& ec) {
   return r;
 }
 
+std::string reason_of(int err) { return reason_of(std::error_code(err, std::generic_category())); }
+
+// Forces what was written to `path` (a file, or a folder's list of names)
+// onto the disk; the errno of the first failure, or 0.
+int sync_to_disk(const std::string& path, bool folder) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | (folder ? O_DIRECTORY : 0));
+  if (fd < 0) return errno;
+  int err = ::fsync(fd) == 0 ? 0 : errno;
+  if (::close(fd) != 0 && err == 0) err = errno;
+  return err;
+}
+
 }  // namespace
 
 AtomicOutput::AtomicOutput(std::string final_path) : final_path_(std::move(final_path)) {
@@ -68,9 +81,22 @@ void AtomicOutput::commit() {
   if (!fs::exists(temp_path_, ec))
     throw InputError(final_path_ + ": cannot write: the temporary file " + temp_path_ +
                      " was never written.");
+  // The data first: without it a crash soon after the rename can leave the
+  // final name on an empty or partial file (ext4 and others write the rename
+  // before the data). A full disk also shows up here, on filesystems that
+  // allocate late, as ENOSPC from fsync.
+  if (const int err = sync_to_disk(temp_path_, false))
+    throw InputError(final_path_ + ": cannot write: " + reason_of(err) + ".");
   fs::rename(temp_path_, final_path_, ec);
   if (ec) throw InputError(final_path_ + ": cannot write: " + reason_of(ec) + ".");
   committed_ = true;
+  // Then the folder, so that the new name itself survives a crash. Some
+  // filesystems cannot sync a folder (EINVAL): nothing more can be done there.
+  fs::path folder = fs::path(final_path_).parent_path();
+  if (folder.empty()) folder = ".";
+  if (const int err = sync_to_disk(folder.string(), true); err != 0 && err != EINVAL)
+    throw InputError(final_path_ + ": written, but the folder " + folder.string() +
+                     " could not be synced to disk: " + reason_of(err) + ".");
 }
 
 void write_text_atomically(const std::string& path, const std::string& text) {

@@ -56,7 +56,16 @@ std::optional<std::string> read_text_attr(hid_t attr) {
 
 }  // namespace
 
-void silence_errors() { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); }
+void silence_errors() {
+  // No clean-up of the library at exit: after a failed write (a full disk)
+  // HDF5 1.10 cannot close the file, and its exit handler then crashes on
+  // the half-closed file (a segmentation fault after the error sentence).
+  // Every file is closed explicitly, so the handler has nothing else to do.
+  // It must be said before the library starts, hence in the first call that
+  // every reader and writer makes; later calls change nothing.
+  H5dont_atexit();
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+}
 
 Id utf8_string_type() {
   Id t(H5Tcopy(H5T_C_S1), H5Tclose);
@@ -99,7 +108,7 @@ void Writer::write_numeric(hid_t loc, const std::string& name, hid_t file_type, 
     fail("cannot write dataset " + name + " (disk full?)");
   attr_text(ds.get(), "units", units);
   attr_text(ds.get(), "description", description);
-  if (!ds.close()) fail("cannot finish dataset " + name);
+  if (!ds.close()) fail("cannot finish dataset " + name + " (disk full?)");
 }
 
 void Writer::f64(hid_t loc, const std::string& name, const std::vector<double>& data,

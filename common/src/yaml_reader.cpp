@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "dda/common/error.hpp"
+#include "yaml_strict.hpp"
 
 namespace dda {
 
@@ -74,12 +75,7 @@ YamlNode YamlNode::load_file(const std::string& path) {
 
 YamlNode YamlNode::load_string(const std::string& text, const std::string& file_label) {
   auto doc = std::make_shared<Document>(Document{file_label, text});
-  YAML::Node root;
-  try {
-    root = YAML::Load(text);
-  } catch (const YAML::Exception& e) {
-    throw InputError(file_label + ":" + std::to_string(e.mark.line + 1) + ": is not valid YAML (" + e.msg + ").");
-  }
+  const YAML::Node root = yaml_strict::parse_document(text, file_label);
   YamlNode node(doc, root, "", 1);
   if (!root.IsMap()) node.fail("must be a mapping of sections (domain, joint_sets, ...) at the top level");
   return node;
@@ -104,6 +100,13 @@ void YamlNode::fail_key(const std::string& key, const std::string& message) cons
 }
 
 bool YamlNode::has(const std::string& key) const { return node_.IsMap() && node_[key]; }
+
+std::vector<std::string> YamlNode::keys() const {
+  std::vector<std::string> out;
+  if (!node_.IsMap()) return out;
+  for (auto it = node_.begin(); it != node_.end(); ++it) out.push_back(it->first.Scalar());
+  return out;
+}
 
 void YamlNode::allow(std::initializer_list<const char*> keys) const {
   allow(std::vector<std::string>(keys.begin(), keys.end()));

@@ -2,8 +2,6 @@
 // docs/scenario.md.
 #include "scenario_joints.hpp"
 
-#include <yaml-cpp/yaml.h>
-
 #include <algorithm>
 
 #include "dda/common/error.hpp"
@@ -67,16 +65,6 @@ JointProperties read_joint(const YamlNode& n, const JointProperties& base) {
   return j;
 }
 
-// Names of the keys of a top-level mapping section, in file order.
-std::vector<std::string> section_keys(const YamlNode& root, const std::string& section) {
-  std::vector<std::string> keys;
-  const YAML::Node doc = YAML::Load(root.source_text());
-  const YAML::Node s = doc[section];
-  if (!s || !s.IsMap()) return keys;
-  for (auto it = s.begin(); it != s.end(); ++it) keys.push_back(it->first.Scalar());
-  return keys;
-}
-
 }  // namespace
 
 const std::vector<std::string>& joint_keys() {
@@ -100,7 +88,7 @@ JointsSection read_joints_section(const YamlNode& root) {
     d->allow(joint_keys());
     out.default_joint = read_joint(*d, out.default_joint);
   }
-  for (const std::string& name : section_keys(root, "joints")) {
+  for (const std::string& name : j->keys()) {  // in file order
     if (name == "default") continue;
     const YamlNode n = j->child(name);
     bool given = false;

@@ -122,3 +122,52 @@ TEST(Scenario, SeedDefaultsToOneAndMustBeNonNegative) {
   EXPECT_EQ(error_of([] { dda::scenario_seed(YamlNode::load_string("seed: -4\n", "s.yaml")); }),
             "s.yaml:1: seed must be >= 0, got -4.");
 }
+
+// Strict loading (docs/reliability.md): yaml-cpp alone keeps the first of two
+// equal keys and reads only the first document, so an edit further down a
+// file would be ignored without a word.
+
+TEST(YamlStrict, KeyGivenTwiceNamesTheKeyPathAndBothLines) {
+  const char* text =
+      "name: a\n"         // 1
+      "control:\n"        // 2
+      "  dt: 0.001\n"     // 3
+      "  steps: 10\n"     // 4
+      "  dt: 0.002\n";    // 5
+  EXPECT_EQ(error_of([&] { YamlNode::load_string(text, "s.yaml"); }),
+            "s.yaml: key 'control.dt' is given twice (lines 3 and 5).");
+  EXPECT_EQ(error_of([] { YamlNode::load_string("seed: 1\nname: a\nseed: 2\n", "s.yaml"); }),
+            "s.yaml: key 'seed' is given twice (lines 1 and 3).");
+}
+
+TEST(YamlStrict, KeyGivenTwiceInsideAListOrAFlowMapping) {
+  EXPECT_EQ(error_of([] { YamlNode::load_string("sets:\n  - name: J1\n    dip: 30\n    dip: 40\n", "s.yaml"); }),
+            "s.yaml: key 'sets[0].dip' is given twice (lines 3 and 4).");
+  EXPECT_EQ(error_of([] { YamlNode::load_string("domain: {box: [0, 0, 1, 1], box: [0, 0, 2, 2]}\n", "s.yaml"); }),
+            "s.yaml: key 'domain.box' is given twice (both on line 1).");
+}
+
+TEST(YamlStrict, EqualKeysInDifferentMappingsAndAliasesAreFine) {
+  const YamlNode root =
+      YamlNode::load_string("a: &m {x: 1, y: 2}\nb: *m\nc:\n  - {x: 3}\n  - {x: 4}\n", "s.yaml");
+  EXPECT_EQ(root.child("b").number("y"), 2);
+  EXPECT_EQ(root.keys(), (std::vector<std::string>{"a", "b", "c"}));
+}
+
+TEST(YamlStrict, SecondDocumentIsAnErrorNamingTheFileAndLine) {
+  EXPECT_EQ(error_of([] { YamlNode::load_string("name: a\nseed: 1\n---\nseed: 2\n", "s.yaml"); }),
+            "s.yaml:3: a second YAML document starts here ('---'); the file must hold exactly one.");
+  // An empty second document counts too: it is still a stray separator.
+  EXPECT_NE(error_of([] { YamlNode::load_string("name: a\n---\n", "s.yaml"); }).find("s.yaml:2: a second"),
+            std::string::npos);
+  // One document with its optional markers is fine.
+  EXPECT_EQ(YamlNode::load_string("---\nname: a\n...\n", "s.yaml").text("name"), "a");
+}
+
+TEST(YamlStrict, LoadFileChecksToo) {
+  const std::string path = ::testing::TempDir() + "/twice.yaml";
+  FILE* f = std::fopen(path.c_str(), "w");
+  std::fputs("domain:\n  box: [0, 0, 1, 1]\ndomain:\n  box: [0, 0, 2, 2]\n", f);
+  std::fclose(f);
+  EXPECT_EQ(error_of([&] { dda::load_scenario(path); }), path + ": key 'domain' is given twice (lines 1 and 3).");
+}

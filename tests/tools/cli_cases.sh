@@ -771,5 +771,148 @@ PY
   true
 }
 
+# ---------------------------------------------------------------- hardening
+# docs/reliability.md: strict YAML, write errors, outputs that spare the
+# inputs.
+
+case_strict_yaml() {
+  write_scenario
+  # A key given twice: yaml-cpp alone would keep seed: 7 without a word.
+  cp scenario.yaml twice.yaml && echo "seed: 8" >> twice.yaml
+  expect_error 1 "^dda: twice.yaml: key 'seed' is given twice \(lines 2 and 13\)\.$" -- "$DDA" dl twice.yaml -o l.h5
+  sed 's/mean_spacing: 1.5,/mean_spacing: 1.5, dip: 35,/' scenario.yaml > inner.yaml
+  expect_error 1 "^dda: inner.yaml: key 'joint_sets\[0\]\.dip' is given twice \(both on line 6\)\.$" -- \
+    "$DDA" run inner.yaml -o out
+  # A second document: everything after the `---` would have been ignored.
+  { cat scenario.yaml; printf -- '---\nseed: 9\n'; } > two.yaml
+  expect_error 1 "^dda: two.yaml:13: a second YAML document starts here \('---'\); the file must hold exactly one\.$" -- \
+    "$DDA" dl two.yaml -o l.h5
+  # The same in a 3D scenario and in the sections `dda df` reads.
+  copy_s3d
+  { cat s3d_small.yaml; echo "seed: 2"; } > s3.yaml
+  expect_error 1 "^dda: s3.yaml: key 'seed' is given twice" -- "$DDA" dl s3.yaml -o f.h5
+  write_incline
+  sed 's/^control: {dt: 0.001,/control: {dt: 0.001, dt: 0.002,/' incline.yaml > dfdup.yaml
+  "$DDA" dl incline.yaml -o l.h5 -q && "$DDA" dc l.h5 -o b.h5 -q || fail "dl, dc of the incline"
+  expect_error 1 "^dda: dfdup.yaml: key 'control.dt' is given twice \(both on line [0-9]+\)\.$" -- \
+    "$DDA" df dfdup.yaml --blocks b.h5 -o r.h5
+  [ ! -e f.h5 ] && [ ! -e r.h5 ] && [ ! -e out ] || fail "an output was written despite the errors"
+}
+
+# The command's output goes to a full device: one sentence, exit 1.
+expect_stdout_error() {
+  "$@" >/dev/full 2>err.txt; local rc=$?
+  [ "$rc" -eq 1 ] || fail "$* > /dev/full: exit $rc, expected 1; stderr: $(cat err.txt)"
+  [ "$(wc -l < err.txt)" -eq 1 ] || fail "$* > /dev/full: expected one line on stderr, got: $(cat err.txt)"
+  grep -qxF "dda: could not write to standard output: No space left on device." err.txt \
+    || fail "$* > /dev/full: stderr '$(cat err.txt)'"
+}
+
+case_stdout_write_errors() {
+  [ -w /dev/full ] || { echo "SKIP: no /dev/full"; return 0; }
+  write_incline
+  "$DDA" run incline.yaml -o out -q --no-vtk --no-plots || fail "run"
+  expect_stdout_error "$DDA" history out/results.h5 --csv
+  expect_stdout_error "$DDA" history out/results.h5 --steps
+  expect_stdout_error "$DDA" history out/results.h5
+  expect_stdout_error "$DDA" stats out/blocks.h5 --json
+  expect_stdout_error "$DDA" stats out/blocks.h5
+  expect_stdout_error "$DDA" info out/results.h5
+  expect_stdout_error "$DDA" wedge --plane 51.4/065.8 --plane 51.4/295.2 --phi 30 --json
+  expect_stdout_error "$DDA" --version
+  expect_stdout_error "$DDA" stats --help
+  # Quiet commands print nothing, so a full standard output is no error.
+  "$DDA" dc out/lines.h5 -o b2.h5 -q > /dev/full || fail "dc -q > /dev/full failed"
+}
+
+# A disk that fills while an output file is written (a file size limit
+# stands in for it; SIGXFSZ ignored so that write() fails with EFBIG as on a
+# full disk instead of killing the process): one sentence naming the file,
+# exit 1, no temporary file and no older file damaged.
+expect_full_disk() {
+  local kib="$1" pattern="$2"; shift 2
+  bash -c 'trap "" XFSZ; ulimit -f "$0"; exec "$@"' "$kib" "$@" >out.txt 2>err.txt; local rc=$?
+  [ "$rc" -eq 1 ] || fail "$* (limit $kib KiB): exit $rc, expected 1; stderr: $(cat err.txt)"
+  [ "$(wc -l < err.txt)" -eq 1 ] || fail "$* (limit $kib KiB): expected one line on stderr, got: $(cat err.txt)"
+  grep -qE "$pattern" err.txt || fail "$* (limit $kib KiB): stderr '$(cat err.txt)' does not match '$pattern'"
+  ls -a | grep -q '\.tmp' && fail "$*: temporary files left behind"
+  true
+}
+
+case_full_disk_output() {
+  write_incline
+  "$DDA" run incline.yaml -o out -q --no-vtk --no-plots || fail "run"
+  expect_full_disk 4 "^dda: l.h5: cannot write: .*\.$" "$DDA" dl incline.yaml -o l.h5 -q
+  expect_full_disk 4 "^dda: b.h5: cannot write: .*\.$" "$DDA" dc out/lines.h5 -o b.h5 -q
+  expect_full_disk 8 "^dda: r.h5: cannot write: .*\.$" "$DDA" df incline.yaml --blocks out/blocks.h5 -o r.h5 -q
+  "$DDA" history out/results.h5 --csv > full.csv || fail "history"
+  [ "$(stat -c %s full.csv)" -gt 2048 ] || fail "the history is too short for the test"
+  expect_full_disk 2 "^dda: h.csv: cannot write: File too large\.$" "$DDA" history out/results.h5 --csv -o h.csv
+  expect_full_disk 1 "^dda: s.json: cannot write: File too large\.$" "$DDA" stats out/blocks.h5 -o s.json -q
+  [ ! -e l.h5 ] && [ ! -e b.h5 ] && [ ! -e r.h5 ] && [ ! -e h.csv ] && [ ! -e s.json ] || fail "a partial output was left"
+}
+
+# Every file below the work folder: name, inode, size and content (an
+# atomic rename over a file changes its inode). The test's own out.txt and
+# err.txt are left out.
+snapshot() {
+  find . -type f ! -name out.txt ! -name err.txt -print0 | sort -z | xargs -0 -r stat -c '%n %i %s'
+  find . -type f ! -name out.txt ! -name err.txt -print0 | sort -z | xargs -0 -r md5sum
+}
+
+# expect_refused PATTERN -- command: refused with exit 1 before any work,
+# every file unchanged and none added.
+expect_refused() {
+  local pattern="$1"; shift 2
+  local before; before=$(snapshot)
+  expect_error 1 "$pattern" -- "$@"
+  [ "$(snapshot)" = "$before" ] || fail "$*: files changed"
+}
+
+case_outputs_spare_inputs() {
+  write_incline
+  "$DDA" dl incline.yaml -o l.h5 -q && "$DDA" dc l.h5 -o b.h5 -q || fail "dl, dc"
+  "$DDA" df incline.yaml --blocks b.h5 -o r.h5 -q || fail "df"
+  local same="; choose another output name\.$"
+  expect_refused "^dda: incline.yaml: will not write the output over the input incline.yaml$same" -- \
+    "$DDA" dl incline.yaml -o incline.yaml
+  expect_refused "^dda: l.h5: will not write the output over the input l.h5$same" -- "$DDA" dc l.h5 -o l.h5
+  expect_refused "^dda: b.h5: will not write the output over the input b.h5$same" -- \
+    "$DDA" df incline.yaml --blocks b.h5 -o b.h5
+  expect_refused "^dda: incline.yaml: will not write the output over the input incline.yaml$same" -- \
+    "$DDA" df incline.yaml --blocks b.h5 -o incline.yaml
+  expect_refused "^dda: l.h5: will not write the output over the input l.h5$same" -- \
+    "$DDA" dc l.h5 -o b9.h5 --report l.h5
+  # Another name for the same file: a symlink, a hard link, another spelling.
+  ln -s b.h5 soft.h5 && ln l.h5 hard.h5 || fail "links"
+  expect_refused "^dda: soft.h5: will not write the output over the input b.h5 \(they are the same file\)$same" -- \
+    "$DDA" df incline.yaml --blocks b.h5 -o soft.h5
+  expect_refused "^dda: hard.h5: will not write the output over the input l.h5 \(they are the same file\)$same" -- \
+    "$DDA" dc l.h5 -o hard.h5
+  expect_refused "^dda: \./incline.yaml: will not write the output over the input incline.yaml" -- \
+    "$DDA" dl incline.yaml -o ./incline.yaml
+  # The other commands with an output and an input.
+  expect_refused "^dda: r.h5: will not write the output over the input r.h5$same" -- \
+    "$DDA" history r.h5 --csv -o r.h5
+  expect_refused "^dda: b.h5: will not write the output over the input b.h5$same" -- "$DDA" stats b.h5 -o b.h5
+  expect_refused "^dda: b.h5: will not write the output over the input b.h5$same" -- "$DDA" plot b.h5 -o b.h5
+  expect_refused "^dda: r.h5: will not write the output over the input r.h5$same" -- \
+    "$DDA" spectra r.h5 --point slider -o r.h5
+  expect_refused "^dda: r.h5: will not write the output over the input r.h5$same" -- \
+    "$DDA" compare r.h5 --point slider --dip 30 --reference r.h5 -o r.h5
+  expect_refused "^dda: incline.yaml: will not write the output over the input incline.yaml$same" -- \
+    "$DDA" run incline.yaml -o incline.yaml
+  # `dda run` writes fixed names into its folder: a scenario kept under one
+  # of them, or inside its vtk/ folder, is refused too.
+  mkdir -p o/vtk && cp incline.yaml o/stats.json && cp incline.yaml o/vtk/s.yaml
+  expect_refused "^dda: o/stats.json: will not write the output over the input o/stats.json$same" -- \
+    "$DDA" run o/stats.json -o o
+  expect_refused "^dda: o/vtk: will not write into this output folder, it holds the input o/vtk/s.yaml; choose another output folder\.$" -- \
+    "$DDA" run o/vtk/s.yaml -o o
+  # A resumed run rewrites its own file by design.
+  "$DDA" df incline.yaml --blocks b.h5 -o part.h5 -q --stop-at-step 5 || fail "df --stop-at-step"
+  "$DDA" df --resume part.h5 -o part.h5 -q || fail "resume in place was refused"
+}
+
 "case_$CASE"
 echo "PASS [$CASE]"

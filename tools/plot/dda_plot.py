@@ -36,6 +36,7 @@ runs headless (Agg). Any problem is one line on stderr and exit status 2.
 """
 
 import argparse
+import errno
 import math
 import os
 import sys
@@ -472,13 +473,30 @@ def plot_3d(paths, formats, labels, a):
 # -------------------------------------------------------------------- main
 
 
+def sync_folder(folder):
+    fd = os.open(folder, os.O_RDONLY | os.O_DIRECTORY)
+    try:
+        os.fsync(fd)
+    except OSError as exc:
+        if exc.errno != errno.EINVAL:  # a filesystem that cannot sync folders
+            raise
+    finally:
+        os.close(fd)
+
+
 def save_atomically(fig, out):
     folder, base = os.path.split(os.path.abspath(out))
     ext = os.path.splitext(base)[1].lower()
     tmp = os.path.join(folder, f".{base}.tmp-{os.getpid()}{ext}")
     try:
         fig.savefig(tmp, format=ext[1:], dpi=150, bbox_inches="tight")
+        # On the disk before the rename, and the rename itself after it, as
+        # the C++ writer does (common/src/atomic_file.cpp): a crash must not
+        # leave the figure's name on an empty file.
+        with open(tmp, "rb") as f:
+            os.fsync(f.fileno())
         os.replace(tmp, out)
+        sync_folder(folder)
     except OSError as exc:
         fail(f"{out}: cannot write: {exc.strerror or exc}")
     finally:

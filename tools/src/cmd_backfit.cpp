@@ -10,6 +10,7 @@
 #include "dda/analysis/backfit.hpp"
 #include "dda/analysis/table.hpp"
 #include "dda/common/error.hpp"
+#include "dda/common/output_guard.hpp"
 #include "pipeline.hpp"
 
 namespace dda::cli {
@@ -47,6 +48,7 @@ void add_backfit_command(CLI::App& app, const GlobalOptions& global) {
   cmd->add_option("-o,--output", opt->output, "Write the JSON result here");
   cmd->add_flag("--json", opt->json, "Print the JSON result (segments, rms, regression, direct)");
   cmd->callback([opt, &global] {
+    refuse_overwriting_inputs({opt->measured, opt->input.record.path}, {opt->output});
     using namespace analysis;
     SlidingModel model;
     if (opt->planes.empty() || opt->planes.size() > 2) throw InputError("--plane: give one or two planes.");

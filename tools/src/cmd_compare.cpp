@@ -16,6 +16,7 @@
 #include "dda/analysis/table.hpp"
 #include "dda/common/atomic_file.hpp"
 #include "dda/common/error.hpp"
+#include "dda/common/output_guard.hpp"
 #include "dda/df/results.hpp"
 #include "pipeline.hpp"
 #include "plot_runner.hpp"
@@ -86,6 +87,7 @@ void add_compare_command(CLI::App& app, const GlobalOptions& global) {
   cmd->add_flag("--json", opt->json,
                 "Print a JSON summary (final_time, final_dda, final_reference, final_relative_error, ...)");
   cmd->callback([opt, &global] {
+    refuse_overwriting_inputs({opt->results, opt->reference}, {opt->output, opt->plot});
     // The DDA component.
     const bool has_dip = !std::isnan(opt->dip);
     if (has_dip == !opt->direction.empty())

@@ -4,6 +4,7 @@
 #include "dda/common/error.hpp"
 #include "dda/common/model_io.hpp"
 #include "dda/common/model_io3.hpp"
+#include "dda/common/output_guard.hpp"
 #include "dda/common/vtk.hpp"
 #include "dda/common/vtk3d.hpp"
 #include "dda/dc/cut.hpp"
@@ -31,6 +32,7 @@ void add_dc_command(CLI::App& app, const GlobalOptions& global) {
                   "(it leaves the block whole)")
       ->check(CLI::IsMember({"glue", "through"}));
   cmd->callback([opt, &global] {
+    refuse_overwriting_inputs({opt->input}, {opt->output, opt->vtk, opt->report});
     if (h5_format_of(opt->input) == "dda-fractures") {
       if (opt->slivers.min_area || opt->slivers.max_aspect || opt->slivers.action)
         throw InputError("--min-area, --max-aspect and --slivers apply to 2D cuts; " + opt->input +

@@ -19,6 +19,7 @@
 #include "dda/common/error.hpp"
 #include "dda/common/model_io.hpp"
 #include "dda/common/model_io3.hpp"
+#include "dda/common/output_guard.hpp"
 #include "dda/common/scenario.hpp"
 #include "dda/common/vtk.hpp"
 #include "dda/df/import_ana.hpp"
@@ -147,6 +148,10 @@ void add_df_command(CLI::App& app, const GlobalOptions& global) {
                   "Stop once the run has this many steps (the results file then holds a checkpoint to resume)")
       ->check(CLI::PositiveNumber);
   cmd->callback([opt, &global] {
+    // Not -o against --resume: a resumed run rewrites its own file by design
+    // (atomically, so the checkpoint survives until the new one is whole).
+    refuse_overwriting_inputs({opt->input, opt->blocks, opt->resume},
+                              {opt->resume.empty() ? opt->output : std::string(), opt->vtk});
     DfStage stage;
     stage.results_path = opt->output;
     stage.vtk_dir = opt->vtk;

@@ -3,6 +3,7 @@
 #include "commands.hpp"
 #include "dda/common/model_io.hpp"
 #include "dda/common/model_io3.hpp"
+#include "dda/common/output_guard.hpp"
 #include "dda/common/vtk.hpp"
 #include "dda/common/vtk3d.hpp"
 #include "dda/dl/generate.hpp"
@@ -25,8 +26,13 @@ void run_dl_3d(const Options& opt, const GlobalOptions& global) {
   // Sections first: a plane that cannot be cut must not leave a fractures
   // file behind that looks like a finished run.
   std::vector<LineModel> sections;
-  for (const dl::TracePlaneSpec& t : dl.trace_planes)
+  std::vector<std::string> section_files;  // their names come from the scenario: guarded once it is read
+  for (const dl::TracePlaneSpec& t : dl.trace_planes) {
     sections.push_back(dl::trace_section(dl.model, dl::trace_frame(t.point, t.dip_deg, t.dip_direction_deg)));
+    section_files.push_back(section_path(opt.output, t.name, ".lines.h5"));
+    if (!opt.vtk.empty()) section_files.push_back(section_path(opt.vtk, t.name, ".lines.vtu"));
+  }
+  refuse_overwriting_inputs({opt.input}, section_files);
   write_fractures_h5(opt.output, dl.model);
   if (!opt.vtk.empty()) write_fractures_vtu(opt.vtk, dl.model);
   if (!opt.report.empty()) write_json(opt.report, dl.report);
@@ -55,6 +61,7 @@ void add_dl_command(CLI::App& app, const GlobalOptions& global) {
   cmd->add_option("--vtk", opt->vtk, "Also write the lines (3D: the fractures) for ParaView (.vtu)");
   cmd->add_option("--report", opt->report, "Write the generated-versus-asked report as JSON");
   cmd->callback([opt, &global] {
+    refuse_overwriting_inputs({opt->input}, {opt->output, opt->vtk, opt->report});
     if (dl_input_dimension(opt->input) == 3) {
       run_dl_3d(*opt, global);
       return;

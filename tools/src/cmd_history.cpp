@@ -12,6 +12,7 @@
 #include "dda/common/atomic_file.hpp"
 #include "dda/common/error.hpp"
 #include "dda/common/model_io.hpp"
+#include "dda/common/output_guard.hpp"
 #include "dda/df/results.hpp"
 #include "dda/df/results3d.hpp"
 #include "results_points.hpp"
@@ -204,6 +205,7 @@ void add_history_command(CLI::App& app, const GlobalOptions&) {
   cmd->add_flag("--steps", opt->steps, "Print the per-step statistics as CSV instead");
   cmd->add_option("-o,--output", opt->output, "Write to this file instead of the standard output");
   cmd->callback([opt] {
+    refuse_overwriting_inputs({opt->input}, {opt->output});
     auto emit = [&opt](const std::string& text) {
       if (opt->output.empty())
         std::cout << text << std::flush;

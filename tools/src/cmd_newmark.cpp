@@ -9,6 +9,7 @@
 #include "dda/analysis/newmark.hpp"
 #include "dda/common/atomic_file.hpp"
 #include "dda/common/error.hpp"
+#include "dda/common/output_guard.hpp"
 #include "pipeline.hpp"
 
 namespace dda::cli {
@@ -38,6 +39,7 @@ void add_newmark_command(CLI::App& app, const GlobalOptions& global) {
   cmd->add_flag("--json", opt->json,
                 "Print a JSON summary (yield_acceleration_g, yield_acceleration_up_g, final_displacement, ...)");
   cmd->callback([opt, &global] {
+    refuse_overwriting_inputs({opt->input.record.path}, {opt->output});
     const analysis::Excitation ex = build_excitation(opt->input);
     analysis::NewmarkInput in = opt->in;
     if (in.duration <= 0.0) in.duration = ex.duration;

@@ -4,6 +4,7 @@
 #include "commands.hpp"
 #include "dda/common/error.hpp"
 #include "dda/common/model_io.hpp"
+#include "dda/common/output_guard.hpp"
 #include "pipeline.hpp"
 #include "plot_runner.hpp"
 
@@ -31,6 +32,7 @@ void add_plot_command(CLI::App& app, const GlobalOptions& global) {
   cmd->add_option("--color", opt->color, "3D blocks: colour by removability (default), body or layer")
       ->check(CLI::IsMember({"removability", "body", "layer"}));
   cmd->callback([opt, &global] {
+    refuse_overwriting_inputs(opt->inputs, {opt->output});
     for (const auto& f : opt->inputs)
       if (h5_format_of(f).empty()) throw InputError(f + ": is not a file written by dda (lines, blocks, fractures or 3D blocks).");
     if (!opt->labels.empty() && opt->labels.size() != opt->inputs.size())

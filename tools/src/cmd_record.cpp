@@ -9,6 +9,7 @@
 #include "commands.hpp"
 #include "dda/common/atomic_file.hpp"
 #include "dda/common/error.hpp"
+#include "dda/common/output_guard.hpp"
 #include "pipeline.hpp"
 
 namespace dda::cli {
@@ -36,6 +37,7 @@ void add_record_command(CLI::App& app, const GlobalOptions& global) {
                   "displacement (and its derivatives from v, a); N (default 3), below 2 for none");
   cmd->add_flag("--json", opt->json, "Print a JSON summary (samples, duration, step, peaks, final v and d)");
   cmd->callback([opt, &global] {
+    refuse_overwriting_inputs({opt->record.path}, {opt->output});
     const AccelRecord rec = load_record(opt->record);
     nlohmann::json j;
     j["source"] = rec.source;

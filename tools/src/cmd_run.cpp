@@ -12,6 +12,7 @@
 #include "commands.hpp"
 #include "dda/common/error.hpp"
 #include "dda/common/model_io.hpp"
+#include "dda/common/output_guard.hpp"
 #include "dda/common/scenario.hpp"
 #include "dda/common/vtk.hpp"
 #include "dda/dc/stats.hpp"
@@ -41,6 +42,24 @@ OutputOptions parse_output_options(const YamlNode& root) {
   return o;
 }
 
+namespace {
+
+// Everything `dda run` may write into its folder, 2D (here) and 3D
+// (run3d.cpp), checked against the scenario before any stage runs: a
+// scenario kept as out/stats.json would be replaced by the statistics.
+void guard_run_outputs(const std::string& scenario, const std::string& outdir) {
+  const fs::path dir(outdir);
+  std::vector<std::string> files{outdir};
+  for (const char* name : {"lines.h5", "fractures.h5", "blocks.h5", "blocks3d.h5", "results.h5", "dl_report.json",
+                           "dc_report.json", "stats.json"})
+    files.push_back((dir / name).string());
+  std::vector<std::string> folders;
+  for (const char* name : {"vtk", "figures", "sections"}) folders.push_back((dir / name).string());
+  refuse_overwriting_inputs({scenario}, files, folders);
+}
+
+}  // namespace
+
 void add_run_command(CLI::App& app, const GlobalOptions& global) {
   struct Options {
     std::string scenario, outdir;
@@ -56,6 +75,7 @@ void add_run_command(CLI::App& app, const GlobalOptions& global) {
   cmd->add_flag("--no-vtk", opt->no_vtk, "Do not write ParaView files");
   add_sliver_options(cmd, opt->slivers);
   cmd->callback([opt, &global] {
+    guard_run_outputs(opt->scenario, opt->outdir);
     if (!fs::exists(opt->scenario)) throw InputError(opt->scenario + ": no such file.");
     const YamlNode root = load_scenario(opt->scenario);
     OutputOptions out = parse_output_options(root);

@@ -10,6 +10,7 @@
 #include "dda/analysis/sliding3d.hpp"
 #include "dda/common/atomic_file.hpp"
 #include "dda/common/error.hpp"
+#include "dda/common/output_guard.hpp"
 #include "pipeline.hpp"
 
 namespace dda::cli {
@@ -42,6 +43,7 @@ void add_sliding3d_command(CLI::App& app, const GlobalOptions& global) {
   cmd->add_flag("--json", opt->json,
                 "Print a JSON summary (final_displacement [x,y,z], final_displacement_magnitude, events, ...)");
   cmd->callback([opt, &global] {
+    refuse_overwriting_inputs({opt->input.record.path, opt->friction.table}, {opt->output});
     analysis::SlidingModel model;
     if (opt->planes.empty() || opt->planes.size() > 2) throw InputError("--plane: give one or two planes.");
     for (const auto& p : opt->planes) model.planes.push_back(analysis::parse_plane(p, "--plane"));

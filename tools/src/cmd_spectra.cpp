@@ -19,6 +19,7 @@
 #include "dda/analysis/spectral_ratio.hpp"
 #include "dda/common/atomic_file.hpp"
 #include "dda/common/error.hpp"
+#include "dda/common/output_guard.hpp"
 #include "pipeline.hpp"
 #include "plot_runner.hpp"
 #include "spectra_input.hpp"
@@ -325,6 +326,7 @@ void add_spectra_command(CLI::App& app, const GlobalOptions& global) {
   cmd->add_option("--plot", opt->plot, "Draw the spectra (.png, .svg or .pdf)");
   cmd->add_flag("--json", opt->json, "Print a JSON summary");
   cmd->callback([opt, cmd, &global] {
+    refuse_overwriting_inputs({opt->input}, {opt->output, opt->plot});
     const Mode mode = opt->response ? Mode::response
                       : opt->hv     ? Mode::hv
                       : !opt->reference.empty() ? Mode::ratio

@@ -6,6 +6,7 @@
 #include "commands.hpp"
 #include "dda/common/model_io.hpp"
 #include "dda/common/model_io3.hpp"
+#include "dda/common/output_guard.hpp"
 #include "dda/dc/stats.hpp"
 #include "dda/dc/stats3d.hpp"
 #include "pipeline.hpp"
@@ -59,6 +60,7 @@ void add_stats_command(CLI::App& app, const GlobalOptions& global) {
   cmd->add_option("--bins", opt->bins, "Histogram bins")->check(CLI::Range(1, 10000));
   cmd->add_option("-o,--output", opt->output, "Also write the JSON to this file");
   cmd->callback([opt, &global] {
+    refuse_overwriting_inputs({opt->input}, {opt->output});
     const bool three_d = h5_format_of(opt->input) == "dda-blocks3d";
     const nlohmann::json st = three_d ? dc::block_statistics_3d(read_polyhedra_h5(opt->input), opt->bins)
                                       : dc::block_statistics(read_blocks_h5(opt->input), opt->bins);

@@ -7,6 +7,7 @@
 #include "dda/common/error.hpp"
 #include "dda/common/model_io.hpp"
 #include "dda/common/model_io3.hpp"
+#include "dda/common/output_guard.hpp"
 #include "dda/common/vtk.hpp"
 #include "dda/dl/dfn3d.hpp"
 #include "dda/dl/polygon3.hpp"
@@ -33,6 +34,7 @@ void add_trace_command(CLI::App& app, const GlobalOptions& global) {
   cmd->add_option("-o,--output", opt->output, "Lines file to write (HDF5)")->required();
   cmd->add_option("--vtk", opt->vtk, "Also write the section's lines for ParaView (.vtu)");
   cmd->callback([opt, &global] {
+    refuse_overwriting_inputs({opt->input}, {opt->output, opt->vtk});
     const FractureModel model = read_fractures_h5(opt->input);
     const Vec3 point(opt->point[0], opt->point[1], opt->point[2]);
     const dl::TraceFrame frame = dl::trace_frame(point, opt->dip, opt->dip_direction);

@@ -12,8 +12,19 @@
 #include "dda/common/memory_policy.hpp"
 #include "dda/common/error.hpp"
 #include "dda/common/provenance.hpp"
+#include "standard_output.hpp"
 
 namespace {
+
+// The exit status of a command that succeeded: still 1 if what it printed
+// never reached the standard output (a full disk, a closed pipe).
+int finish() {
+  if (const auto failure = dda::cli::standard_output_failure()) {
+    std::cerr << "dda: could not write to standard output: " << *failure << ".\n";
+    return 1;
+  }
+  return 0;
+}
 
 // OpenMP threads that wait for work sleep instead of spinning, unless the
 // user chose (OMP_WAIT_POLICY, or libgomp's GOMP_SPINCOUNT). libgomp reads
@@ -31,6 +42,7 @@ void prefer_passive_waiting(int, char**, char**) {
 
 int main(int argc, char** argv) {
   dda::keep_freed_memory();  // memory_policy.hpp: large buffers are re-allocated every iterate
+  dda::cli::watch_standard_output();
   CLI::App app{"dda: discontinuous deformation analysis of jointed rock.\n"
                "Pipeline: dl (lines) -> dc (blocks) -> df (forward run) -> history; "
                "`dda run` chains the stages a scenario asks for."};
@@ -62,7 +74,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     // --help and --version are "errors" with exit code 0 in CLI11.
     const int code = app.exit(e);
-    return code == 0 ? 0 : 2;
+    return code == 0 ? finish() : 2;
   } catch (const dda::InputError& e) {
     std::cerr << "dda: " << e.what() << "\n";
     return 1;
@@ -70,5 +82,5 @@ int main(int argc, char** argv) {
     std::cerr << "dda: internal error: " << e.what() << " (please report this)\n";
     return 3;
   }
-  return 0;
+  return finish();
 }

@@ -10,6 +10,10 @@
 //
 // A stage parses its section with a YamlNode: call allow() with the keys the
 // section knows first, then read each key with a typed getter.
+//
+// Loading is strict too: a key given twice in one mapping, or a second YAML
+// document after `---`, is an error (yaml-cpp alone would quietly keep the
+// first value and ignore the rest; docs/reliability.md).
 #include <yaml-cpp/yaml.h>
 
 #include <initializer_list>
@@ -37,7 +41,8 @@ struct Range {
 
 class YamlNode {
  public:
-  // Parses a whole file; a syntax error is an InputError naming file and line.
+  // Parses a whole file; a syntax error, a duplicate key or a second document
+  // is an InputError naming file and line.
   static YamlNode load_file(const std::string& path);
   static YamlNode load_string(const std::string& text, const std::string& file_label);
 
@@ -51,6 +56,8 @@ class YamlNode {
   bool is_sequence() const { return node_.IsSequence(); }
   bool is_scalar() const { return node_.IsScalar(); }
   bool has(const std::string& key) const;
+  // The keys of this mapping in file order (none if it is not a mapping).
+  std::vector<std::string> keys() const;
 
   // Declares the keys this mapping may hold; any other key is an error that
   // names it (and the closest allowed key, if one is close). Also checks that
