@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "df_test_models.hpp"
 #include "dda/common/error.hpp"
@@ -40,6 +42,13 @@ TEST(DefaultTimeStep, LoadingSampledFinerWins) {
   EXPECT_DOUBLE_EQ(default_time_step({{1.0, 1000}}, 10.0).dt, 1e-3);
   EXPECT_DOUBLE_EQ(shortest_interval({0.0, 0.01, 0.015, 0.03}), 0.005);
   EXPECT_EQ(shortest_interval({1.0}), 0.0);
+  // Times read as decimals: the interval as written, exactly (0.3 - 0.2 is
+  // 0.09999999999999998 in doubles; a 12 s record at 1 kHz written with three
+  // decimals has a shortest difference of 0.0009999999999994458).
+  EXPECT_EQ(shortest_interval({0.2, 0.3, 0.4}), 0.1);
+  std::vector<double> kilohertz;
+  for (int k = 0; k <= 12000; ++k) kilohertz.push_back(std::stod(std::to_string(k / 1000.0).substr(0, 6)));
+  EXPECT_EQ(shortest_interval(kilohertz), 0.001);
   EXPECT_THROW(default_time_step({}, 0.0), InputError);
 }
 
