@@ -93,26 +93,14 @@ std::vector<Polygon2> read_polygons(const h5::Reader& r, const std::string& grou
                                     std::vector<double>* flat_out = nullptr) {
   std::size_t nv = 0;
   std::vector<double> xy = read_matrix(r, group + "/vertices", 2, nv, "V");
-  const std::string off_name = group + "/offsets";
-  h5::Array<std::int64_t> off = r.i64(off_name);
-  if (off.dims.size() != 1 || off.dims[0] < 1)
-    r.fail("dataset " + off_name + " has shape " + shape_text(off.dims) +
-           ", expected (P+1,) with at least one entry");
-  if (off.data.front() != 0)
-    r.fail("dataset " + off_name + " must start at 0, found " + std::to_string(off.data.front()));
-  if (off.data.back() != static_cast<std::int64_t>(nv))
-    r.fail("dataset " + off_name + " must end at the number of vertices " + std::to_string(nv) +
-           ", found " + std::to_string(off.data.back()));
-  std::vector<Polygon2> polys(off.data.size() - 1);
-  for (std::size_t i = 0; i + 1 < off.data.size(); ++i) {
-    const std::int64_t a = off.data[i], b = off.data[i + 1];
-    if (b - a < 3)
-      r.fail("dataset " + off_name + " gives polygon " + std::to_string(i) + " " +
-             std::to_string(b - a) + " vertices (offsets must rise by at least 3)");
+  // Validated against the vertex count: every index below is in range.
+  const std::vector<std::int64_t> off = r.offsets(group + "/offsets", nv, 3, "polygon");
+  std::vector<Polygon2> polys(off.size() - 1);
+  for (std::size_t i = 0; i + 1 < off.size(); ++i) {
+    const auto a = static_cast<std::size_t>(off[i]), b = static_cast<std::size_t>(off[i + 1]);
     Polygon2& p = polys[i];
-    p.reserve(static_cast<std::size_t>(b - a));
-    for (std::int64_t k = a; k < b; ++k)
-      p.emplace_back(xy[2 * static_cast<std::size_t>(k)], xy[2 * static_cast<std::size_t>(k) + 1]);
+    p.reserve(b - a);
+    for (std::size_t k = a; k < b; ++k) p.emplace_back(xy[2 * k], xy[2 * k + 1]);
   }
   if (flat_out) *flat_out = std::move(xy);
   return polys;
@@ -382,6 +370,8 @@ std::string h5_format_of(const std::string& path) {
   }
   try {
     return r->attr_text(r->file(), "format", "the file").value_or("");
+  } catch (const h5::DamagedFile&) {
+    throw;  // damage is not "another program's file"
   } catch (const InputError&) {
     return "";
   }

@@ -11,21 +11,10 @@
 namespace dda {
 namespace {
 
-// An (n, 3) int32 dataset (h5::Writer writes 1-D integers only).
-void write_triangles(h5::Writer& w, const std::string& shown, hid_t loc, const std::string& name,
+// An (n, 3) int32 dataset of vertex ids.
+void write_triangles(h5::Writer& w, hid_t loc, const std::string& name,
                      const std::vector<std::int32_t>& ids, const std::string& description) {
-  const hsize_t dims[2] = {ids.size() / 3, 3};
-  auto fail = [&](const std::string& what) { throw InputError(shown + ": cannot write: " + what + " " + name + "."); };
-  h5::Id space(H5Screate_simple(2, dims, nullptr), H5Sclose);
-  if (!space.valid()) fail("cannot make the dataspace of");
-  h5::Id ds(H5Dcreate2(loc, name.c_str(), H5T_STD_I32LE, space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
-            H5Dclose);
-  if (!ds.valid()) fail("cannot create dataset");
-  if (!ids.empty() && H5Dwrite(ds.get(), H5T_NATIVE_INT32, H5S_ALL, H5S_ALL, H5P_DEFAULT, ids.data()) < 0)
-    fail("cannot write dataset");
-  w.attr_text(ds.get(), "units", "");
-  w.attr_text(ds.get(), "description", description);
-  if (!ds.close()) fail("cannot finish dataset");
+  w.i32(loc, name, ids, {ids.size() / 3, 3}, "", description);
 }
 
 void append_mesh(const TriangleMesh& m, std::vector<Vec3>& vertices, std::vector<std::int32_t>& ids) {
@@ -34,7 +23,7 @@ void append_mesh(const TriangleMesh& m, std::vector<Vec3>& vertices, std::vector
 }
 
 // Written only with a surface: an absent group is a box domain.
-void write_domain_surface(h5::Writer& w, const std::string& shown, const std::optional<TriangleMesh>& surface) {
+void write_domain_surface(h5::Writer& w, const std::optional<TriangleMesh>& surface) {
   if (!surface) return;
   h5::Id g = w.group("domain/surface");
   std::vector<Vec3> vertices;
@@ -42,11 +31,11 @@ void write_domain_surface(h5::Writer& w, const std::string& shown, const std::op
   append_mesh(*surface, vertices, ids);
   w.f64(g.get(), "vertices", io::flatten(vertices), {vertices.size(), 3}, "m",
         "vertices x, y, z of the closed surface that bounds the rock");
-  write_triangles(w, shown, g.get(), "triangles", ids,
+  write_triangles(w, g.get(), "triangles", ids,
                   "vertex ids (rows of vertices, from 0) of each triangle, counter-clockwise seen from outside the rock");
 }
 
-void write_excavations(h5::Writer& w, const std::string& shown, const std::vector<Excavation3>& excavations) {
+void write_excavations(h5::Writer& w, const std::vector<Excavation3>& excavations) {
   h5::Id g = w.group("excavations");
   std::vector<std::string> names;
   std::vector<double> planes;
@@ -72,7 +61,7 @@ void write_excavations(h5::Writer& w, const std::string& shown, const std::vecto
         "vertices of the closed surfaces of the excavations that have one, one excavation after another");
   w.i64(g.get(), "mesh_vertex_offsets", vertex_offsets, "",
         "excavation i has mesh_vertices[mesh_vertex_offsets[i]:mesh_vertex_offsets[i+1]]; E+1 entries");
-  write_triangles(w, shown, g.get(), "mesh_triangles", mesh_ids,
+  write_triangles(w, g.get(), "mesh_triangles", mesh_ids,
                   "triangles of the excavations' surfaces: vertex ids local to the excavation's mesh_vertices "
                   "(from 0), counter-clockwise seen from outside the opening");
   w.i64(g.get(), "mesh_triangle_offsets", triangle_offsets, "",
@@ -251,8 +240,8 @@ void write_fractures_h5(const std::string& path, const FractureModel& model) {
     h5::Writer w(path, out.temp_path());
     io::write_root_attributes(w, kFracturesFormat, io::kUnits3d, model.provenance);
     io::write_domain(w, model.domain);
-    write_domain_surface(w, path, model.domain_surface);
-    write_excavations(w, path, model.excavations);
+    write_domain_surface(w, model.domain_surface);
+    write_excavations(w, model.excavations);
     write_fractures(w, model.fractures);
     io::write_sets(w, model.sets);
     io::write_points(w, model.points);

@@ -237,21 +237,7 @@ std::vector<std::string> read_strings(const h5::Reader& r, const std::string& ds
 std::vector<std::int64_t> read_offsets(const h5::Reader& r, const std::string& ds,
                                        std::size_t total, long long min_step,
                                        const std::string& item) {
-  h5::Array<std::int64_t> off = r.i64(ds);
-  if (off.dims.size() != 1 || off.dims[0] < 1)
-    r.fail("dataset " + ds + " has shape " + shape_text(off.dims) +
-           ", expected (N+1,) with at least one entry");
-  if (off.data.front() != 0)
-    r.fail("dataset " + ds + " must start at 0, found " + std::to_string(off.data.front()));
-  if (off.data.back() != static_cast<std::int64_t>(total))
-    r.fail("dataset " + ds + " must end at " + std::to_string(total) + ", found " +
-           std::to_string(off.data.back()));
-  for (std::size_t i = 0; i + 1 < off.data.size(); ++i)
-    if (off.data[i + 1] - off.data[i] < min_step)
-      r.fail("dataset " + ds + " gives " + item + " " + std::to_string(i) + " " +
-             std::to_string(off.data[i + 1] - off.data[i]) + " entries, it needs at least " +
-             std::to_string(min_step));
-  return std::move(off.data);
+  return r.offsets(ds, total, min_step, item);
 }
 
 Box3 read_domain(const h5::Reader& r, const std::string& at) {

@@ -234,17 +234,17 @@ void read_model(const h5::Reader& r, Results& out) {
   BlockModel& bm = out.blocks;
   const std::size_t nv = length(r, "/model/blocks/vertices");
   const std::vector<double> xy = f64(r, "/model/blocks/vertices", {nv, 2});
-  const std::size_t nb1 = out.block_count + 1;  // read_results_h5 checked the offsets' length
-  const std::vector<std::int64_t> off = i64(r, "/model/blocks/offsets", nb1);
+  const std::size_t nb1 = out.block_count + 1;
+  const std::vector<std::int64_t> off = r.offsets("/model/blocks/offsets", nv, 3, "block");
+  if (off.size() != nb1)
+    r.fail("dataset /model/blocks/offsets has " + std::to_string(off.size()) + " entries, expected " +
+           std::to_string(nb1) + ", one more than the blocks");
   const std::size_t nb = nb1 - 1;
   const std::vector<std::int64_t> es = i64(r, "/model/blocks/edge_set", nv);
   const std::vector<std::int64_t> layer = i64(r, "/model/blocks/layer", nb);
-  if (off.front() != 0 || off.back() != static_cast<std::int64_t>(nv))
-    r.fail("dataset /model/blocks/offsets must start at 0 and end at the vertex count");
   for (std::size_t i = 0; i < nb; ++i) {
-    if (off[i + 1] - off[i] < 3) r.fail("dataset /model/blocks/offsets gives a block fewer than 3 vertices");
     Block b;
-    for (std::int64_t k = off[i]; k < off[i + 1]; ++k) {
+    for (auto k = static_cast<std::size_t>(off[i]); k < static_cast<std::size_t>(off[i + 1]); ++k) {
       b.vertices.emplace_back(xy[2 * k], xy[2 * k + 1]);
       b.edge_set.push_back(static_cast<int>(es[k]));
     }
@@ -284,6 +284,15 @@ void read_model(const h5::Reader& r, Results& out) {
     l.top = top[i];
     bm.layers.push_back(l);
   }
+  // Set and bed ids index tables later on: out of range, they are damage.
+  for (std::size_t k = 0; k < nv; ++k)
+    if (es[k] < kArtificialSet || es[k] >= static_cast<std::int64_t>(bm.sets.size()))
+      r.fail("dataset /model/blocks/edge_set entry " + std::to_string(k) + " is " + std::to_string(es[k]) +
+             ", not a joint set of the file");
+  for (std::size_t i = 0; i < nb; ++i)
+    if (layer[i] < -1 || layer[i] >= static_cast<std::int64_t>(nl))
+      r.fail("dataset /model/blocks/layer entry " + std::to_string(i) + " is " + std::to_string(layer[i]) +
+             ", not a bed of the file");
 }
 
 void read_log(const h5::Reader& r, Results& out) {

@@ -53,7 +53,8 @@ def main():
     args = ap.parse_args()
 
     with h5py.File(args.results, "r") as f:
-        if f.attrs.get("format") != "dda-results":
+        fmt = f.attrs.get("format", b"")  # fixed-length text: h5py gives bytes
+        if (fmt.decode() if isinstance(fmt, bytes) else fmt) != "dda-results":
             sys.exit(f"{args.results}: not a dda-results file")
         names = list(f["points/name"].asstr()[()])
         t = f["series/time"][()]

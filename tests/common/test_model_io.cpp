@@ -383,7 +383,7 @@ TEST_F(ForeignFileTest, ShapesAndOffsetsAreChecked) {
   EXPECT_EQ(msg.rfind(path("offsets.h5") + ": dataset /blocks/offsets", 0), 0u) << msg;
   msg = error_of([&] { dda::read_blocks_h5(path("end.h5")); });
   EXPECT_EQ(msg, path("end.h5") +
-                     ": dataset /blocks/offsets must end at the number of vertices 7, found 6.");
+                     ": dataset /blocks/offsets must end at 7, found 6.");
   msg = error_of([&] { dda::read_blocks_h5(path("area.h5")); });
   EXPECT_EQ(msg, path("area.h5") + ": dataset /blocks/area has shape (3,), expected (2,), one value per block.");
 }

@@ -5,6 +5,12 @@
 // results, checkpoints): handles that close themselves, and a writer and a
 // reader that turn every HDF5 failure into one InputError sentence naming
 // the file (HDF5's own error stack printing is switched off).
+//
+// Damaged files (docs/reliability.md, "Damaged files"): the writer makes
+// every byte that matters checksummed (HDF5 1.10 metadata, Fletcher-32 on
+// every dataset, fixed-length text only), and the reader is the one place
+// that checks a size, a count or a string length against the file before
+// anything is allocated or indexed.
 #include <hdf5.h>
 
 #include <cstdint>
@@ -12,7 +18,17 @@
 #include <string>
 #include <vector>
 
+#include "dda/common/error.hpp"
+
 namespace dda::h5 {
+
+// The InputError of a damaged file ("PATH: is damaged (...)."), its own type
+// so that a caller that takes other errors as "not one of ours" (e.g.
+// h5_format_of) still reports the damage.
+class DamagedFile : public InputError {
+ public:
+  using InputError::InputError;
+};
 
 // Switches off HDF5's automatic error printing (idempotent).
 void silence_errors();
@@ -53,7 +69,8 @@ class Id {
   Closer closer_ = nullptr;
 };
 
-// A UTF-8 variable-length string type (caller owns it).
+// A UTF-8 variable-length string type (caller owns it). Only for reading
+// files written before fixed-length text; nothing is written with it.
 Id utf8_string_type();
 
 // Creates a new HDF5 file at `real_path`; every message names `shown_path`
@@ -65,18 +82,23 @@ class Writer {
   // Creates a group below the root (e.g. "lines") and returns it.
   Id group(const std::string& name);
 
-  // Datasets: `dims` has one entry (1-D) or two (rows x columns); zero sizes
-  // give zero-size datasets. Each carries `units` and `description` attributes.
+  // Datasets: `dims` has one entry (1-D) or more (rows x columns x ...); zero
+  // sizes give zero-size datasets. Each carries `units` and `description`
+  // attributes, and every non-empty one is chunked with the Fletcher-32
+  // checksum filter.
   void f64(hid_t loc, const std::string& name, const std::vector<double>& data,
            std::vector<hsize_t> dims, const std::string& units, const std::string& description);
   void i32(hid_t loc, const std::string& name, const std::vector<std::int32_t>& data,
            const std::string& units, const std::string& description);
+  void i32(hid_t loc, const std::string& name, const std::vector<std::int32_t>& data,
+           std::vector<hsize_t> dims, const std::string& units, const std::string& description);
   void i64(hid_t loc, const std::string& name, const std::vector<std::int64_t>& data,
            const std::string& units, const std::string& description);
   void strings(hid_t loc, const std::string& name, const std::vector<std::string>& data,
                const std::string& units, const std::string& description);
 
-  // Scalar attributes on any object (file, group or dataset).
+  // Scalar attributes on any object (file, group or dataset); text is a
+  // fixed-length UTF-8 string.
   void attr_text(hid_t obj, const std::string& name, const std::string& value);
   void attr_i32(hid_t obj, const std::string& name, std::int32_t value);
   void attr_u64(hid_t obj, const std::string& name, std::uint64_t value);
@@ -114,6 +136,10 @@ class Reader {
   // ("/lines/set").
   bool exists(const std::string& abs_path) const;
 
+  // The size of the file in bytes: no dataset, attribute or string of it can
+  // hold more, so every claim of one to be larger is damage.
+  std::uint64_t file_bytes() const { return file_bytes_; }
+
   std::optional<std::string> attr_text(hid_t obj, const std::string& name,
                                        const std::string& where) const;
   std::optional<std::int64_t> attr_int(hid_t obj, const std::string& name,
@@ -128,15 +154,33 @@ class Reader {
   Array<std::int64_t> i64(const std::string& abs_path) const;
   std::vector<std::string> strings(const std::string& abs_path) const;
 
+  // CSR offsets (item i owns [offsets[i], offsets[i+1])): a 1-D integer
+  // dataset of at least one entry, starting at 0, ending at `total`, each
+  // entry at least `min_step` above the one before. Whoever indexes with
+  // them may then trust every one to lie in [0, total]. `item` names what an
+  // entry is ("polygon", "face") for the message.
+  std::vector<std::int64_t> offsets(const std::string& abs_path, std::size_t total,
+                                    long long min_step, const std::string& item) const;
+
+  // "PATH: WHAT." (a value the file holds is wrong).
   [[noreturn]] void fail(const std::string& what) const;
+  // "PATH: is damaged (WHAT)." (HDF5 could not read it, a checksum failed,
+  // or a size is beyond what the file could hold).
+  [[noreturn]] void damaged(const std::string& what) const;
 
  private:
   Id open_dataset(const std::string& abs_path) const;
   template <class T>
   Array<T> numeric(const std::string& abs_path, hid_t mem_type) const;
   Id open_scalar_attr(hid_t obj, const std::string& name, const std::string& where) const;
+  // Elements of `space` times `element_bytes`, refused as damage beyond the
+  // file's size; `what` names the object for the message.
+  hsize_t checked_count(hid_t space, std::size_t element_bytes, const std::string& what,
+                        std::vector<hsize_t>* dims = nullptr) const;
+  std::optional<std::string> read_text_attr(hid_t attr, const std::string& what) const;
 
   std::string path_;
+  std::uint64_t file_bytes_ = 0;
   Id file_;
 };
 
