@@ -226,6 +226,12 @@ output: {vtk: true, plots: false}""")
 PY
 }
 
+# The incline scenario and its blocks file (blocks.h5), cut by dl and dc.
+incline_blocks() {
+  write_incline
+  "$DDA" dl incline.yaml -o lines.h5 -q && "$DDA" dc lines.h5 -o blocks.h5 -q || fail "dl, dc"
+}
+
 case_df_incline_analytic() {
   write_incline
   "$DDA" run incline.yaml -o out -q || fail "run"
@@ -314,8 +320,7 @@ PY
 }
 
 case_df_progress_lines() {
-  write_incline
-  "$DDA" dl incline.yaml -o lines.h5 -q && "$DDA" dc lines.h5 -o blocks.h5 -q || fail "dl, dc"
+  incline_blocks
   # 10 000 steps of 0.1 ms, output going to files (not a terminal): with
   # DDA_PROGRESS_SECONDS=0.01 a progress line every 0.02 s on stderr.
   sed 's/dt: 0.001,/dt: 0.0001,/' incline.yaml > fine.yaml
@@ -346,8 +351,7 @@ case_df_start_lines() {
   # E is 50 GPa and the default penalty 50 E, so pn = ps = 2.5e12 N/m; a
   # dynamic parameter of 0.99 caps a free fall at g dt / (1 - 0.99) =
   # 9.81 * 0.001 / 0.01 = 0.981 m/s; the slab and slider start relaxed.
-  write_incline
-  "$DDA" dl incline.yaml -o lines.h5 -q && "$DDA" dc lines.h5 -o blocks.h5 -q || fail "dl, dc"
+  incline_blocks
   sed 's/dt: 0.001, total_time: 1.0/dt: 0.001, dynamic: 0.99, total_time: 0.01/' incline.yaml > s.yaml
   "$DDA" df s.yaml --blocks blocks.h5 -o r.h5 > out.txt 2> err.txt || fail "df: $(cat err.txt)"
   grep -q "^DF: contact springs pn 2.5e+12 N/m, ps 2.5e+12 N/m (per m of thickness); dt 0.001 s; up to 6 open-close iterations a step, contact clusters on$" out.txt \
@@ -371,10 +375,9 @@ case_df_damping() {
   # control.damping: the run states what it gives, checked by hand: 5 % of
   # critical at 4 Hz is beta = 0.05 / (pi 4) = 0.00397887 s, and
   # stiffness-proportional damping gives 2.5 % at 2 Hz and 10 % at 8 Hz.
-  write_incline
+  incline_blocks
   sed 's/dt: 0.001, total_time: 1.0/dt: 0.001, damping: {ratio: 0.05, frequency: 4}, total_time: 0.01/' \
     incline.yaml > s.yaml
-  "$DDA" dl incline.yaml -o lines.h5 -q && "$DDA" dc lines.h5 -o blocks.h5 -q || fail "dl, dc"
   "$DDA" df s.yaml --blocks blocks.h5 -o r.h5 > out.txt 2> err.txt || fail "df: $(cat err.txt)"
   grep -q "^DF: viscous damping 5 % of critical at 4 Hz on the blocks' deformation (beta = 0.00397887 s; 2.5 % at 2 Hz, 10 % at 8 Hz); rigid motion and the contact springs are not damped$" out.txt \
     || fail "no damping line: $(cat out.txt)"
@@ -403,8 +406,7 @@ case_df_default_dt() {
   # worked by hand. 2D incline: slider 1 x 1 m and slab of 8 m^2, the lower
   # median of two is the slider; E 50 GPa, nu 0.25, rho 2000, plane stress:
   # c = sqrt(E / (1 - nu^2) / rho) = 5164 m/s, dt = 1 / 5164 = 0.000193649 s.
-  write_incline
-  "$DDA" dl incline.yaml -o lines.h5 -q && "$DDA" dc lines.h5 -o blocks.h5 -q || fail "dl, dc"
+  incline_blocks
   sed 's/dt: 0.001, total_time: 1.0/total_time: 0.01/' incline.yaml > s.yaml
   "$DDA" df s.yaml --blocks blocks.h5 -o r.h5 > out.txt 2> err.txt || fail "df: $(cat err.txt)"
   grep -q "^DF: dt 0.000193649 s from the model (control.dt not given): a P wave (5.16e+03 m/s) crosses the median block (1 m) in 0.000194 s$" out.txt \
