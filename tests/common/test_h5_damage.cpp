@@ -16,6 +16,7 @@
 
 #include "dda/common/error.hpp"
 #include "dda/common/model_io.hpp"
+#include "scratch_dir_test.hpp"
 
 namespace fs = std::filesystem;
 
@@ -40,31 +41,13 @@ dda::BlockModel two_blocks() {
   return m;
 }
 
-class H5Damage : public ::testing::Test {
+class H5Damage : public dda::testing::ScratchDirTest {
  protected:
+  H5Damage() : ScratchDirTest("dda-h5-damage") {}
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("dda-h5-damage-" + std::to_string(::getpid()) + "-" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    ScratchDirTest::SetUp();
     H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
   }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-
-  template <class F>
-  static std::string error_of(F&& f) {
-    try {
-      f();
-    } catch (const dda::InputError& e) {
-      return e.what();
-    }
-    ADD_FAILURE() << "expected an InputError";
-    return "";
-  }
-
-  fs::path dir_;
 };
 
 // Every object of a file, visited: datasets and their filters, attributes

@@ -11,49 +11,22 @@
 #include <sys/wait.h>
 
 #include "dda/common/error.hpp"
+#include "scratch_dir_test.hpp"
 
 namespace fs = std::filesystem;
 using dda::Vec2;
 
 namespace {
 
-class ModelIoTest : public ::testing::Test {
+class ModelIoTest : public dda::testing::ScratchDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("dda-model-io-" + std::to_string(::getpid()) + "-" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-  std::vector<std::string> listing() const {
-    std::vector<std::string> names;
-    for (const auto& e : fs::directory_iterator(dir_)) names.push_back(e.path().filename().string());
-    std::sort(names.begin(), names.end());
-    return names;
-  }
+  ModelIoTest() : ScratchDirTest("dda-model-io") {}
   static std::string slurp(const std::string& p) {
     std::ifstream f(p, std::ios::binary);
     std::ostringstream s;
     s << f.rdbuf();
     return s.str();
   }
-  // Runs f, expects an InputError, returns its message.
-  template <class F>
-  static std::string error_of(F&& f) {
-    try {
-      f();
-    } catch (const dda::InputError& e) {
-      return e.what();
-    }
-    ADD_FAILURE() << "expected an InputError";
-    return "";
-  }
-
-  fs::path dir_;
 };
 
 dda::Provenance sample_provenance() {

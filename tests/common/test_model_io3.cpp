@@ -13,39 +13,16 @@
 #include "dda/common/error.hpp"
 #include "dda/common/model_io.hpp"
 #include "dda/common/triangle_mesh.hpp"
+#include "scratch_dir_test.hpp"
 
 namespace fs = std::filesystem;
 using dda::Vec3;
 
 namespace {
 
-class ModelIo3Test : public ::testing::Test {
+class ModelIo3Test : public dda::testing::ScratchDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("dda-model-io3-" + std::to_string(::getpid()) + "-" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-  std::vector<std::string> listing() const {
-    std::vector<std::string> names;
-    for (const auto& e : fs::directory_iterator(dir_)) names.push_back(e.path().filename().string());
-    std::sort(names.begin(), names.end());
-    return names;
-  }
-  template <class F>
-  static std::string error_of(F&& f) {
-    try {
-      f();
-    } catch (const dda::InputError& e) {
-      return e.what();
-    }
-    ADD_FAILURE() << "expected an InputError";
-    return "";
-  }
+  ModelIo3Test() : ScratchDirTest("dda-model-io3") {}
   // Runs a Python script (argv[1] = the test folder) to make foreign files;
   // false when /usr/bin/python3 with h5py is not there.
   bool run_python(const std::string& code) {
@@ -54,7 +31,6 @@ class ModelIo3Test : public ::testing::Test {
     std::ofstream(script) << code;
     return std::system(("/usr/bin/python3 " + script + " " + dir_.string()).c_str()) == 0;
   }
-  fs::path dir_;
 };
 
 dda::Provenance sample_provenance() {

@@ -9,37 +9,21 @@
 #include <fstream>
 
 #include "dda/common/error.hpp"
+#include "scratch_dir_test.hpp"
 
 namespace fs = std::filesystem;
 using dda::refuse_overwriting_inputs;
 
 namespace {
 
-class OutputGuardTest : public ::testing::Test {
+class OutputGuardTest : public dda::testing::ScratchDirTest {
  protected:
+  OutputGuardTest() : ScratchDirTest("dda-guard") {}
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("dda-guard-" + std::to_string(::getpid()) + "-" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_ / "sub");
+    ScratchDirTest::SetUp();
+    std::filesystem::create_directories(dir_ / "sub");
     std::ofstream(path("s.yaml")) << "name: a\n";
   }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-
-  template <class F>
-  static std::string error_of(F&& f) {
-    try {
-      f();
-    } catch (const dda::InputError& e) {
-      return e.what();
-    }
-    return "";
-  }
-
-  fs::path dir_;
 };
 
 }  // namespace
