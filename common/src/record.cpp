@@ -11,6 +11,7 @@
 
 #include "dda/common/atomic_file.hpp"
 #include "dda/common/error.hpp"
+#include "dda/common/text_input.hpp"
 
 namespace dda {
 
@@ -70,11 +71,7 @@ std::string read_text(const std::string& path) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw InputError(path + ": file not found.");
   if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": is a folder, not a file.");
-  std::ifstream f(path, std::ios::binary);
-  if (!f) throw InputError(path + ": cannot open the file for reading.");
-  std::ostringstream s;
-  s << f.rdbuf();
-  return s.str();
+  return read_text_file(path, "record");
 }
 
 double unit_factor(AccelUnits u) { return u == AccelUnits::g ? kRecordGravity : 1.0; }
@@ -134,9 +131,8 @@ AccelRecord parse_record_csv(const std::string& text, const std::string& name, c
   std::string line;
   std::size_t line_no = 0;
   Eigen::Vector3d dir = Eigen::Vector3d::UnitX();
-  while (std::getline(in, line)) {
+  while (read_text_line(in, line, name, line_no + 1)) {
     ++line_no;
-    if (!line.empty() && line.back() == '\r') line.pop_back();
     const std::string tl = trim(line);
     if (tl.empty() || tl[0] == '#') continue;
     const std::vector<std::string> fields = split_fields(tl);
@@ -184,7 +180,7 @@ AccelRecord parse_record_at2(const std::string& text, const std::string& name, c
   std::string line;
   std::vector<std::string> header;
   for (int i = 0; i < 4; ++i) {
-    if (!std::getline(in, line))
+    if (!read_text_line(in, line, name, static_cast<std::size_t>(i) + 1))
       throw InputError(name + ": the AT2 header is cut short (four lines expected, then the values).");
     if (!line.empty() && line.back() == '\r') line.pop_back();
     header.push_back(line);
@@ -242,9 +238,8 @@ AccelRecord parse_record_at2(const std::string& text, const std::string& name, c
   AccelRecord rec;
   rec.source = name;
   std::size_t line_no = 4;
-  while (std::getline(in, line)) {
+  while (read_text_line(in, line, name, line_no + 1)) {
     ++line_no;
-    if (!line.empty() && line.back() == '\r') line.pop_back();
     std::istringstream ls(line);
     std::string field;
     while (ls >> field) {

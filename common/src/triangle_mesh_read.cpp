@@ -11,16 +11,13 @@
 
 #include "dda/common/error.hpp"
 #include "dda/common/triangle_mesh.hpp"
+#include "dda/common/text_input.hpp"
 
 namespace dda {
 
 namespace {
 
-std::string read_all(const std::string& path, const char* what) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open the " + what + " file.");
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+std::string read_all(const std::string& path, const char* what) { return read_text_file(path, what); }
 
 // STL repeats each corner in every triangle that has it; the copies are
 // written from one value, so bit-identical coordinates are one vertex.
@@ -86,7 +83,7 @@ TriangleMesh read_ascii_stl(const std::string& path, const std::string& data) {
   int number = 0;
   bool in_solid = false, in_loop = false;
   std::vector<int> corners;
-  while (std::getline(in, line)) {
+  while (read_text_line(in, line, path, static_cast<std::size_t>(number) + 1)) {
     ++number;
     std::istringstream words(line);
     std::string key;
@@ -151,7 +148,7 @@ TriangleMesh read_obj(const std::string& path) {
   std::istringstream in(data);
   std::string line;
   int number = 0;
-  while (std::getline(in, line)) {
+  while (read_text_line(in, line, path, static_cast<std::size_t>(number) + 1)) {
     ++number;
     std::istringstream words(line);
     std::string key;

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "dda/common/error.hpp"
+#include "dda/common/text_input.hpp"
 #include "yaml_strict.hpp"
 
 namespace dda {
@@ -66,11 +67,7 @@ YamlNode::YamlNode(std::shared_ptr<const Document> doc, YAML::Node node, std::st
     : doc_(std::move(doc)), node_(std::move(node)), path_(std::move(path)), parent_line_(parent_line) {}
 
 YamlNode YamlNode::load_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open the scenario file.");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return load_string(text.str(), path);
+  return load_string(read_text_file(path, "scenario"), path);
 }
 
 YamlNode YamlNode::load_string(const std::string& text, const std::string& file_label) {

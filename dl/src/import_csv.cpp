@@ -2,10 +2,12 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 #include "dda/common/error.hpp"
 #include "dda/dl/import.hpp"
+#include "dda/common/text_input.hpp"
 #include "text_fields.hpp"
 
 namespace dda::dl {
@@ -27,14 +29,13 @@ bool parse_number(const std::string& field, double& v) {
 }  // namespace
 
 std::vector<CsvTrace> read_traces_csv(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open the trace file.");
+  std::istringstream in(read_text_file(path, "trace"));
   std::vector<CsvTrace> out;
   std::string raw;
   int line_no = 0;
   bool first_content = true;
   const char* columns = "x1,y1,x2,y2[,set]";
-  while (std::getline(in, raw)) {
+  while (read_text_line(in, raw, path, static_cast<std::size_t>(line_no) + 1)) {
     ++line_no;
     const std::string line = trim(raw);
     if (line.empty() || line[0] == '#') continue;

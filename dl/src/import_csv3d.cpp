@@ -1,11 +1,13 @@
 // CSV polygons: one row per vertex, the rows of a fracture consecutive.
 #include <fstream>
 #include <map>
+#include <sstream>
 #include <string>
 
 #include "dda/common/error.hpp"
 #include "dda/dl/fractures3d.hpp"
 #include "dda/dl/import3d.hpp"
+#include "dda/common/text_input.hpp"
 #include "text_fields.hpp"
 
 namespace dda::dl {
@@ -28,8 +30,7 @@ int set_index(ImportedFractures& out, const std::string& name) {
 }  // namespace
 
 ImportedFractures read_fracture_csv(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open the fracture polygon file.");
+  std::istringstream in(read_text_file(path, "fracture polygon"));
   static const char* kColumns[5] = {"fracture", "set", "x", "y", "z"};
   ImportedFractures out;
   int column[5] = {-1, -1, -1, -1, -1};
@@ -48,7 +49,7 @@ ImportedFractures read_fracture_csv(const std::string& path) {
 
   std::string raw;
   int line_no = 0;
-  while (std::getline(in, raw)) {
+  while (read_text_line(in, raw, path, static_cast<std::size_t>(line_no) + 1)) {
     ++line_no;
     const std::string line = detail::trim(raw);
     if (line.empty() || line[0] == '#') continue;

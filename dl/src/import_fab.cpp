@@ -2,12 +2,14 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "dda/common/error.hpp"
 #include "dda/dl/fractures3d.hpp"
 #include "dda/dl/import3d.hpp"
+#include "dda/common/text_input.hpp"
 #include "text_fields.hpp"
 
 namespace dda::dl {
@@ -23,11 +25,10 @@ struct Line {
 class Reader {
  public:
   explicit Reader(const std::string& path) : path_(path) {
-    std::ifstream in(path);
-    if (!in) throw InputError(path + ": cannot open the FracMan fracture file.");
+    std::istringstream in(read_text_file(path, "FracMan fracture"));
     std::string raw;
     int n = 0;
-    while (std::getline(in, raw)) {
+    while (read_text_line(in, raw, path, static_cast<std::size_t>(n) + 1)) {
       ++n;
       std::string t = detail::trim(raw);
       if (!t.empty()) lines_.push_back({n, std::move(t)});

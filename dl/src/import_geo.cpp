@@ -22,6 +22,7 @@
 #include "dda/common/error.hpp"
 #include "dda/dl/clip.hpp"
 #include "dda/dl/generate.hpp"
+#include "dda/common/text_input.hpp"
 
 namespace dda::dl {
 
@@ -65,9 +66,10 @@ struct GeoReader {
 
 LineModel import_geo(const std::string& path) {
   tinyxml2::XMLDocument doc;
-  const tinyxml2::XMLError err = doc.LoadFile(path.c_str());
-  if (err == tinyxml2::XML_ERROR_FILE_NOT_FOUND || err == tinyxml2::XML_ERROR_FILE_COULD_NOT_BE_OPENED)
-    throw InputError(path + ": cannot open the DDA geometry file.");
+  // Read with the project's limits (tinyxml2's LoadFile asks the file its
+  // size, which /dev/zero does not have).
+  const std::string text = read_text_file(path, "DDA geometry");
+  const tinyxml2::XMLError err = doc.Parse(text.c_str(), text.size());
   if (err != tinyxml2::XML_SUCCESS)
     throw InputError(path + ":" + std::to_string(doc.ErrorLineNum()) + ": is not valid XML (" +
                      tinyxml2::XMLDocument::ErrorIDToName(err) + ").");

@@ -39,8 +39,11 @@ void read_traces(const YamlNode& root, Builder& b) {
     try {
       traces = read_traces_csv(path);
     } catch (const InputError& e) {
-      // Name both the scenario key and the trace file's own line.
-      n.fail_key("file", std::string("names a trace file with an error: ") + e.what());
+      // Name both the scenario key and the trace file's own line (one
+      // sentence: the trace file's own full stop goes).
+      std::string why = e.what();
+      if (!why.empty() && why.back() == '.') why.pop_back();
+      n.fail_key("file", "names a trace file with an error: " + why);
     }
     std::size_t kept = 0, outside = 0;
     for (const CsvTrace& t : traces) {

@@ -232,6 +232,26 @@ incline_blocks() {
   "$DDA" dl incline.yaml -o lines.h5 -q && "$DDA" dc lines.h5 -o blocks.h5 -q || fail "dl, dc"
 }
 
+case_unbounded_text_inputs() {
+  # A text input that is not text ends in one sentence, quickly: /dev/zero
+  # has no line ends and no end (it was read for ever), and a binary file
+  # read as lines is one huge line (docs/reliability.md, "Bounded reads").
+  cat > s.yaml <<'YAML'
+name: zero
+seed: 1
+domain: {polygon: [[0, 0], [10, 0], [10, 10], [0, 10]]}
+traces:
+  - {file: /dev/zero, set: mapped}
+YAML
+  expect_error 1 "^dda: s.yaml:5: traces\\[0\\].file names a trace file with an error: /dev/zero:1: is longer than 1 MiB, so this is not a trace file\\.$" -- \
+    timeout 20 "$DDA" dl s.yaml -o l.h5
+  expect_error 1 "^dda: /dev/zero:1: is longer than 1 MiB, so this is not a scenario file\\.$" -- timeout 20 "$DDA" dl /dev/zero -o l.h5
+  head -c 3000000 /dev/urandom | tr -d '\n' > noise.csv
+  expect_error 1 "noise.csv:1: is longer than 1 MiB, so this is not a record file\\.$" -- \
+    timeout 20 "$DDA" spectra noise.csv --units g
+  [ ! -e l.h5 ] || fail "an output was written"
+}
+
 case_df_incline_analytic() {
   write_incline
   "$DDA" run incline.yaml -o out -q || fail "run"

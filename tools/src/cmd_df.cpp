@@ -27,6 +27,7 @@
 #include "dda/df/results3d.hpp"
 #include "dda/df/runaway.hpp"
 #include "dda/df/scenario.hpp"
+#include "dda/common/text_input.hpp"
 #include "df_session.hpp"
 #include "pipeline.hpp"
 
@@ -36,13 +37,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open the file.");
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+std::string read_text(const std::string& path) { return read_text_file(path, "analysis"); }
 
 // Everything a run needs, from a fresh start or a results file.
 struct Job {

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "dda/common/error.hpp"
+#include "dda/common/text_input.hpp"
 
 namespace dda::analysis {
 
@@ -51,13 +52,12 @@ NumericTable read_numeric_table(const std::string& path, const std::vector<std::
                                 bool allow_repeats) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw InputError(path + ": file not found.");
-  std::ifstream f(path);
-  if (!f) throw InputError(path + ": cannot open the file for reading.");
+  std::istringstream f(read_text_file(path, "table"));
   NumericTable table;
   std::string line;
   std::size_t line_no = 0;
   bool seen = false;
-  while (std::getline(f, line)) {
+  while (read_text_line(f, line, path, line_no + 1)) {
     ++line_no;
     const std::string tl = trim(line);
     if (tl.empty() || tl[0] == '#') continue;
@@ -105,12 +105,11 @@ int NamedTable::column(const std::string& name) const {
 NamedTable read_named_table(const std::string& path, const std::string& expected) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw InputError(path + ": file not found.");
-  std::ifstream f(path);
-  if (!f) throw InputError(path + ": cannot open the file for reading.");
+  std::istringstream f(read_text_file(path, "table"));
   NamedTable t;
   std::string line;
   std::size_t line_no = 0;
-  while (std::getline(f, line)) {
+  while (read_text_line(f, line, path, line_no + 1)) {
     ++line_no;
     const std::string tl = trim(line);
     if (tl.empty() || tl[0] == '#') continue;
