@@ -58,10 +58,10 @@ double shortest_interval(const std::vector<double>& times) {
   for (std::size_t k = 1; k < times.size(); ++k) out = std::min(out, times[k] - times[k - 1]);
   if (!std::isfinite(out)) return 0.0;
   // To 10 digits: the difference of two times read as decimals is the
-  // interval as written only to rounding (0.003 - 0.002 is 0.000999...9),
+  // interval as written only to rounding (0.3 - 0.2 is 0.09999999999999998),
   // and a record sampled at 1 kHz must give the step 0.001 exactly: the
   // stick-slip of a wedge near its yield acceleration follows round-off, so
-  // a step 1e-19 s off moved the shaking-table example by 3 %.
+  // a step 6e-16 s short (0.0009999999999994) moved the shaking-table example by 3 %.
   std::ostringstream s;
   s.precision(10);
   s << out;
