@@ -58,6 +58,7 @@ void add_dc_command(CLI::App& app, const GlobalOptions& global) {
     if (!opt->vtk.empty()) write_blocks_vtu(opt->vtk, cut.model);
     if (!opt->report.empty()) write_json(opt->report, cut.report);
     say(global.quiet, describe_cut(cut.model, opt->output));
+    warn_of_lost_area(cut.model);
   });
 }
 

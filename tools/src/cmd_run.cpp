@@ -112,6 +112,7 @@ void add_run_command(CLI::App& app, const GlobalOptions& global) {
     write_blocks_h5(blocks_h5, cut.model);
     write_json((dir / "dc_report.json").string(), cut.report);
     say(global.quiet, "DC: " + describe_cut(cut.model, blocks_h5));
+    warn_of_lost_area(cut.model);
 
     write_json((dir / "stats.json").string(), dc::block_statistics(cut.model, out.histogram_bins));
 

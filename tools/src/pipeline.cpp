@@ -83,6 +83,18 @@ std::string describe_cut(const BlockModel& blocks, const std::string& path) {
   return s.str();
 }
 
+void warn_of_lost_area(const BlockModel& blocks) {
+  double area = 0;
+  for (const Block& b : blocks.blocks) area += b.area;
+  const double rock = blocks.domain_area - blocks.excavated_area, lost = rock - area;
+  if (!(lost > 1e-9 * blocks.domain_area)) return;
+  std::ostringstream s;
+  s << "dda: warning: the blocks cover " << area << " of the " << rock << " m^2 cut; " << lost << " m^2 ("
+    << 100 * lost / rock << " %) were dropped as degenerate faces (joints nearly meeting at one point); "
+    << "the cut report (--report) lists them under `degenerate`\n";
+  std::cerr << s.str();
+}
+
 void make_dir(const std::filesystem::path& dir) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);

@@ -53,6 +53,11 @@ void add_sliver_options(CLI::App* cmd, SliverOverrides& o);
 
 // One line describing a cut: block count and area, and where it went.
 std::string describe_cut(const BlockModel& blocks, const std::string& path);
+// Said on stderr after a 2D cut whose blocks do not cover the rock it cut
+// (domain less excavations): faces the cutter dropped as degenerate (joints
+// nearly meeting at one point round to a face that is no simple polygon).
+// Nothing below 1e-9 of the domain. The report's `degenerate` lists them.
+void warn_of_lost_area(const BlockModel& blocks);
 
 // Creates a folder (and its parents); InputError naming it if that fails.
 void make_dir(const std::filesystem::path& dir);
