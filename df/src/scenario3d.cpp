@@ -87,7 +87,7 @@ GroundInput3 read_earthquake3(const YamlNode& n) {
   try {
     g.motion = std::make_shared<GroundMotion3>(rec.t, std::move(a));
   } catch (const InputError& err) {
-    n.fail_key("record", "cannot be used: " + df::sentence_tail(err));
+    n.fail_key("record", "cannot be used: " + sentence_tail(err));
   }
   g.mode = make_ground_input_mode3(mode);
   return g;

@@ -53,12 +53,6 @@ Vec3 read_direction(const YamlNode& n, int dimension) {
 
 }  // namespace
 
-std::string sentence_tail(const InputError& e) {
-  std::string s = e.what();
-  while (!s.empty() && (s.back() == '.' || s.back() == ' ')) s.pop_back();
-  return s;
-}
-
 RecordEntry read_record_entry(const YamlNode& n, int dimension, int default_baseline) {
   RecordEntry e;
   e.path = resolve_scenario_path(n, n.text("record"));

@@ -10,6 +10,7 @@
 #include "dda/common/geometry3.hpp"
 #include "dda/common/record.hpp"
 #include "dda/common/yaml_reader.hpp"
+#include "dda/common/sentence_tail.hpp"
 
 namespace dda::df {
 
@@ -24,10 +25,6 @@ struct RecordEntry {
 // `dimension` 2: direction [dx, dy] and components x, y (y vertical);
 // 3: [dx, dy, dz] and x, y, z (z up). `default_baseline`: the mode's.
 RecordEntry read_record_entry(const YamlNode& n, int dimension, int default_baseline);
-
-// A library message as the tail of a scenario sentence (YamlNode::fail adds
-// the full stop).
-std::string sentence_tail(const InputError& e);
 
 // Reports `err`, raised while reading and processing the record of `e`, at
 // the key it belongs to: `filter` when the record reads on its own

@@ -7,6 +7,7 @@
 #include "dda/common/scenario.hpp"
 #include "dda/dl/generate.hpp"
 #include "dda/dl/import.hpp"
+#include "dda/common/sentence_tail.hpp"
 
 namespace dda::dl::detail {
 
@@ -39,11 +40,8 @@ void read_traces(const YamlNode& root, Builder& b) {
     try {
       traces = read_traces_csv(path);
     } catch (const InputError& e) {
-      // Name both the scenario key and the trace file's own line (one
-      // sentence: the trace file's own full stop goes).
-      std::string why = e.what();
-      if (!why.empty() && why.back() == '.') why.pop_back();
-      n.fail_key("file", "names a trace file with an error: " + why);
+      // Name both the scenario key and the trace file's own line.
+      n.fail_key("file", "names a trace file with an error: " + sentence_tail(e));
     }
     std::size_t kept = 0, outside = 0;
     for (const CsvTrace& t : traces) {
