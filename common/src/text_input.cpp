@@ -1,6 +1,7 @@
 // Text inputs read with limits (text_input.hpp).
 #include "dda/common/text_input.hpp"
 
+#include <algorithm>
 #include <fstream>
 #include <vector>
 
@@ -8,28 +9,46 @@
 
 namespace dda {
 
-std::string read_text_file(const std::string& path, const std::string& what) {
+namespace {
+
+// Reads `path` in chunks up to the size limit; `check` sees the text after
+// each chunk (so a text file can be refused long before its end).
+template <class Check>
+std::string read_bounded(const std::string& path, const std::string& what, Check&& check) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ": cannot open the " + what + " file.");
   std::string text;
   std::vector<char> chunk(std::size_t{1} << 16);
-  std::size_t line_start = 0, line_number = 1;  // of the line being read
   while (in) {
     in.read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
-    const std::size_t from = text.size();
     text.append(chunk.data(), static_cast<std::size_t>(in.gcount()));
     if (text.size() > kMaxTextFileBytes)
       throw InputError(path + ": is larger than 1 GiB, too large for a " + what + " file.");
-    // A line past the limit ends the read here, not a gigabyte later
-    // (/dev/zero has no line ends).
-    for (std::size_t k = from; k < text.size(); ++k)
-      if (text[k] == '\n') line_start = k + 1, ++line_number;
-    if (text.size() - line_start > kMaxTextLineBytes)
-      throw InputError(path + ":" + std::to_string(line_number) + ": is longer than 1 MiB, so this is not a " + what +
-                       " file.");
+    check(text);
   }
   if (in.bad()) throw InputError(path + ": cannot be read to its end.");
   return text;
+}
+
+}  // namespace
+
+std::string read_input_file(const std::string& path, const std::string& what) {
+  return read_bounded(path, what, [](const std::string&) {});
+}
+
+std::string read_text_file(const std::string& path, const std::string& what) {
+  // A line past the limit ends the read here, not a gigabyte later
+  // (/dev/zero has no line ends). The search from the end stops at the
+  // last line end, within the last chunk but for a line already too long.
+  return read_bounded(path, what, [&](const std::string& text) {
+    const std::size_t last_end = text.rfind('\n');
+    const std::size_t line_start = last_end == std::string::npos ? 0 : last_end + 1;
+    if (text.size() - line_start > kMaxTextLineBytes) {
+      const auto line = std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(line_start), '\n') + 1;
+      throw InputError(path + ":" + std::to_string(line) + ": is longer than 1 MiB, so this is not a " + what +
+                       " file.");
+    }
+  });
 }
 
 bool read_text_line(std::istream& in, std::string& line, const std::string& file, std::size_t line_number) {

@@ -17,8 +17,6 @@ namespace dda {
 
 namespace {
 
-std::string read_all(const std::string& path, const char* what) { return read_text_file(path, what); }
-
 // STL repeats each corner in every triangle that has it; the copies are
 // written from one value, so bit-identical coordinates are one vertex.
 class VertexMerger {
@@ -132,7 +130,9 @@ bool obj_corner(const std::string& word, long long& v) {
 }  // namespace
 
 TriangleMesh read_stl(const std::string& path) {
-  const std::string data = read_all(path, "STL surface");
+  // Binary STL has no lines: the size limit only (its ASCII lines are
+  // bounded one by one as they are read).
+  const std::string data = read_input_file(path, "STL surface");
   // Some binary files start with "solid" too: the size decides first.
   if (looks_binary(data)) return read_binary_stl(path, data);
   const std::size_t first = data.find_first_not_of(" \t\r\n");
@@ -142,7 +142,7 @@ TriangleMesh read_stl(const std::string& path) {
 }
 
 TriangleMesh read_obj(const std::string& path) {
-  const std::string data = read_all(path, "OBJ surface");
+  const std::string data = read_text_file(path, "OBJ surface");
   TriangleMesh m;
   std::vector<int> triangle_line;  // for messages about ids read before their vertices
   std::istringstream in(data);

@@ -56,4 +56,13 @@ TEST_F(TextInputTest, WholeFileAndItsLimits) {
             path("long.csv") + ":3: is longer than 1 MiB, so this is not a trace file.");
 }
 
+TEST_F(TextInputTest, AFileThatMayBeBinaryHasTheSizeLimitOnly) {
+  // A binary STL may hold no byte 0x0A for megabytes (normals 0, 0, 1 and
+  // whole-number coordinates): it is no text, and must still be read.
+  const std::string data(2 * dda::kMaxTextLineBytes, '\x3f');
+  std::ofstream(path("box.stl"), std::ios::binary) << data;
+  EXPECT_EQ(dda::read_input_file(path("box.stl"), "STL surface"), data);
+  EXPECT_NE(error_of([&] { dda::read_text_file(path("box.stl"), "STL surface"); }), "");
+}
+
 }  // namespace

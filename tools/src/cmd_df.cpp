@@ -37,8 +37,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string read_text(const std::string& path) { return read_text_file(path, "analysis"); }
-
 // Everything a run needs, from a fresh start or a results file.
 struct Job {
   df::Results results;
@@ -180,7 +178,7 @@ void add_df_command(CLI::App& app, const GlobalOptions& global) {
     const BlockModel blocks = read_blocks_h5(opt->blocks);
     Job job;
     if (df::is_ana_path(opt->input)) {
-      job = job_from_ana(read_text(opt->input), opt->input, blocks, opt->blocks, global.quiet);
+      job = job_from_ana(read_text_file(opt->input, "analysis"), opt->input, blocks, opt->blocks, global.quiet);
     } else {
       const YamlNode root = load_scenario(opt->input);
       job = job_from_scenario(root, blocks, opt->blocks);

@@ -25,6 +25,11 @@ inline constexpr std::size_t kMaxTextFileBytes = std::size_t{1} << 30;  // 1 GiB
 // than 1 GiB, too large for a WHAT file.".
 std::string read_text_file(const std::string& path, const std::string& what);
 
+// The whole file with the size limit only, for formats that may be binary
+// (STL): "PATH: cannot open the WHAT file." or "PATH: is larger than 1 GiB,
+// too large for a WHAT file.".
+std::string read_input_file(const std::string& path, const std::string& what);
+
 // The next line of `in` into `line`, without its end ("\n", "\r\n"): false
 // at the end of the input, as std::getline. InputError "FILE:LINE: is longer
 // than 1 MiB, so this is not a text file." for a longer line.
