@@ -136,8 +136,10 @@ void Simulation::before_accept(double dt, const Eigen::VectorXd& d) {
     const int m = model_.block_material[i];
     const Vector6d v1 = 2.0 / dt * di(i) - b.velocity;
     twice_kinetic[i] = v1.dot(mass_matrix(b.geometry, model_.materials[m].density) * v1);
-    const Vector3d de = di(i).tail<3>();
-    viscous[i] = beta / dt * b.geometry.area * de.dot(emat_[m] * de);
+    if (beta > 0) {
+      const Vector3d de = di(i).tail<3>();
+      viscous[i] = beta / dt * b.geometry.area * de.dot(emat_[m] * de);
+    }
   }
   for (int i = 0; i < nb; ++i) {
     const BlockState& b = blocks_[i];

@@ -28,20 +28,17 @@ double p_wave_speed(double young, double poisson, double density, bool plane_str
 }
 
 TimeStepChoice default_time_step(std::vector<BlockCrossing> blocks, double loading_interval) {
-  std::vector<double> crossing;
-  for (const BlockCrossing& b : blocks)
-    if (b.size > 0 && b.speed > 0 && std::isfinite(b.size / b.speed)) crossing.push_back(b.size / b.speed);
-  if (crossing.empty()) throw InputError("No block has a size and a wave speed to choose the time step from; give control.dt.");
+  auto crossing = [](const BlockCrossing& b) { return b.size / b.speed; };
+  std::erase_if(blocks, [&](const BlockCrossing& b) { return !(b.size > 0 && b.speed > 0 && std::isfinite(crossing(b))); });
+  if (blocks.empty()) throw InputError("No block has a size and a wave speed to choose the time step from; give control.dt.");
   // The median, not the smallest: cutting leaves slivers, and one sliver
   // must not set the step of a whole model. Of an even count, the lower one.
-  const auto mid = crossing.begin() + static_cast<std::ptrdiff_t>((crossing.size() - 1) / 2);
-  std::nth_element(crossing.begin(), mid, crossing.end());
-  const double t_block = *mid;
-  std::size_t median_index = 0;
-  for (std::size_t k = 0; k < blocks.size(); ++k)
-    if (blocks[k].size > 0 && blocks[k].speed > 0 && blocks[k].size / blocks[k].speed == t_block) median_index = k;
-  const std::string crossing_text = "a P wave (" + num(blocks[median_index].speed) + " m/s) crosses the median block (" +
-                                    num(blocks[median_index].size) + " m) in " + num(t_block) + " s";
+  const auto mid = blocks.begin() + static_cast<std::ptrdiff_t>((blocks.size() - 1) / 2);
+  std::nth_element(blocks.begin(), mid, blocks.end(),
+                   [&](const BlockCrossing& a, const BlockCrossing& b) { return crossing(a) < crossing(b); });
+  const double t_block = crossing(*mid);
+  const std::string crossing_text = "a P wave (" + num(mid->speed) + " m/s) crosses the median block (" +
+                                    num(mid->size) + " m) in " + num(t_block) + " s";
   TimeStepChoice c;
   if (loading_interval > 0 && loading_interval < t_block) {
     c.dt = loading_interval;

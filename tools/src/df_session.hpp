@@ -151,9 +151,6 @@ std::string contact_settings(const Sim& sim) {
            " N/m (per contact point); dt " + num(m.control.dt) + " s; up to " + std::to_string(m.max_iterations) +
            " open-close iterations a step";
   }
-  // A step the model chose says why, so that a user can judge it.
-  if (!m.control.dt_basis.empty())
-    line += "\nDF: dt " + num(m.control.dt) + " s from the model (control.dt not given): " + m.control.dt_basis;
   return line;
 }
 
@@ -177,6 +174,9 @@ void run_session(Sim& sim, Results& results, const OutputOptions& output, const 
   say(stage.quiet, "DF: " + std::to_string(blocks) + " blocks on " + std::to_string(threads.threads()) +
                        (threads.threads() == 1 ? " thread\n" : " threads\n"));
   say(stage.quiet, "DF: " + contact_settings(sim) + "\n");
+  // A step the model chose says why, so that a user can judge it.
+  if (const auto& c = sim.model().control; !c.dt_basis.empty())
+    say(stage.quiet, "DF: dt " + num(c.dt) + " s from the model (control.dt not given): " + c.dt_basis + "\n");
   if constexpr (requires { sim.model().control.dynamic; }) {
     // A dynamic parameter below 1 damps every motion, free falls included,
     // which the classic examples' 0.99 hid: falling roof beds moved at a

@@ -75,17 +75,24 @@ void add_sliver_options(CLI::App* cmd, SliverOverrides& o) {
       ->check(CLI::IsMember({"merge", "report"}));
 }
 
-std::string describe_cut(const BlockModel& blocks, const std::string& path) {
+namespace {
+
+double total_area(const BlockModel& blocks) {
   double area = 0;
   for (const Block& b : blocks.blocks) area += b.area;
+  return area;
+}
+
+}  // namespace
+
+std::string describe_cut(const BlockModel& blocks, const std::string& path) {
   std::ostringstream s;
-  s << blocks.blocks.size() << " blocks (total area " << area << " m^2) written to " << path << "\n";
+  s << blocks.blocks.size() << " blocks (total area " << total_area(blocks) << " m^2) written to " << path << "\n";
   return s.str();
 }
 
 void warn_of_lost_area(const BlockModel& blocks) {
-  double area = 0;
-  for (const Block& b : blocks.blocks) area += b.area;
+  const double area = total_area(blocks);
   const double rock = blocks.domain_area - blocks.excavated_area, lost = rock - area;
   if (!(lost > 1e-9 * blocks.domain_area)) return;
   std::ostringstream s;
