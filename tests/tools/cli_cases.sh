@@ -274,6 +274,19 @@ PY
   [ ! -s err.txt ] || fail "a clean cut warned: $(cat err.txt)"
 }
 
+# The incline's slider moved less than 1e-4 m from t = 0 to 1 s or later
+# (HISTORY: `dda history --csv --point slider`).
+slider_stayed() {
+  /usr/bin/python3 - "$1" <<'PY' || fail "the slider moved"
+import csv, math, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+first, last = rows[0], rows[-1]
+moved = math.hypot(float(last["slider.ux"]) - float(first["slider.ux"]), float(last["slider.uy"]) - float(first["slider.uy"]))
+print("slider moved %.3e m between t = %s and %s s" % (moved, first["t"], last["t"]))
+assert float(first["t"]) == 0 and float(last["t"]) >= 1 - 1e-9 and moved < 1e-4, moved
+PY
+}
+
 case_df_incline_analytic() {
   write_incline
   "$DDA" run incline.yaml -o out -q || fail "run"
@@ -464,14 +477,7 @@ case_df_default_dt() {
   "$DDA" run soft.yaml -o soft --no-vtk --no-plots > out.txt 2> err.txt || fail "run soft: $(cat err.txt)"
   grep -q "^DF: dt 0.00136931 s from the model" out.txt || fail "soft dt: $(cat out.txt)"
   "$DDA" history soft/results.h5 --csv --point slider > h.csv || fail "history"
-  /usr/bin/python3 - h.csv <<'PY' || fail "the slider moved"
-import csv, math, sys
-rows = list(csv.DictReader(open(sys.argv[1])))
-first, last = rows[0], rows[-1]
-moved = math.hypot(float(last["slider.ux"]) - float(first["slider.ux"]), float(last["slider.uy"]) - float(first["slider.uy"]))
-print("slider moved %.3e m in %s s at the default dt" % (moved, last["t"]))
-assert float(last["t"]) >= 1 - 1e-9 and moved < 1e-4, moved
-PY
+  slider_stayed h.csv
   # 3D incline: the slider is 27 m^3 (3 m), E 10 GPa, nu 0.25, rho 2600:
   # c = sqrt(E (1 - nu) / ((1 + nu)(1 - 2 nu)) / rho) = 2148.3 m/s, dt = 3 / 2148.3 = 0.00139642 s.
   sed 's/control: {dt: 0.001, total_time: 1,/control: {total_time: 0.01,/' "$SRC/tests/data/df3_incline.yaml" > s3.yaml
@@ -493,14 +499,7 @@ case_df_friction_limit() {
   grep -q "young: 1.0e9" s.yaml || fail "the scenario edit did not apply"
   "$DDA" run s.yaml -o out -q --no-vtk --no-plots || fail "run"
   "$DDA" history out/results.h5 --csv --point slider > h.csv || fail "history"
-  /usr/bin/python3 - h.csv <<'PY' || fail "the slider moved"
-import csv, math, sys
-rows = list(csv.DictReader(open(sys.argv[1])))
-first, last = rows[0], rows[-1]
-moved = math.hypot(float(last["slider.ux"]) - float(first["slider.ux"]), float(last["slider.uy"]) - float(first["slider.uy"]))
-print("slider moved %.3e m between t = %s and %s s" % (moved, first["t"], last["t"]))
-assert float(first["t"]) == 0 and float(last["t"]) >= 1 - 1e-9 and moved < 1e-4, moved
-PY
+  slider_stayed h.csv
 }
 
 case_df_history_columns() {
