@@ -4,6 +4,7 @@
 // Report keys (all counts unless stated):
 //   input_lines, segments_too_short, lines_outside_domain, lines_clipped,
 //   min_segment_length (m), snap_length (m),
+//   near_crossings {crossings, merged, segments_rerouted}  (near_crossings.cpp),
 //   arrangement {vertices, edges, faces}   right after insertion,
 //   dangling_edges_removed, isolated_vertices_removed,
 //   faces               bounded faces after pruning,
@@ -13,7 +14,7 @@
 //   degenerate_blocks, degenerate [{x, y, vertices, area, reason}],
 //   collinear_vertices_removed, duplicate_vertices_removed,
 //   blocks, block_area, domain_area, excavated_area (m^2), located_points,
-//   warnings [text], seconds (total), seconds_detail {prepare, arrangement,
+//   warnings [text], seconds (total), seconds_detail {prepare, near_crossings, arrangement,
 //   topology, extract, blocks}.
 #include <chrono>
 #include <cmath>
@@ -46,6 +47,9 @@ CutResult cut_blocks(const LineModel& lines, const CutOptions& options) {
 
   detail::PreparedInput in = detail::prepare_segments(lines, options);
   const double t_prepare = secs(t_start);
+  const auto t_near = Clock::now();
+  const detail::NearCrossings near = detail::merge_near_crossings(in);
+  const double t_near_crossings = secs(t_near);
 
   std::vector<Vec2> holes, locate;
   std::vector<std::size_t> hole_index, locate_index;
@@ -136,6 +140,7 @@ CutResult cut_blocks(const LineModel& lines, const CutOptions& options) {
   r["lines_clipped"] = in.lines_clipped;
   r["min_segment_length"] = in.min_segment_length;
   r["snap_length"] = in.snap;
+  r["near_crossings"] = {{"crossings", near.crossings}, {"merged", near.merged}, {"segments_rerouted", near.rerouted}};
   r["arrangement"] = {{"vertices", ar.arrangement_vertices},
                       {"edges", ar.arrangement_edges},
                       {"faces", ar.arrangement_faces}};
@@ -163,6 +168,7 @@ CutResult cut_blocks(const LineModel& lines, const CutOptions& options) {
   r["warnings"] = ar.warnings;
   r["seconds"] = secs(t_start);
   r["seconds_detail"] = {{"prepare", t_prepare},
+                         {"near_crossings", t_near_crossings},
                          {"arrangement", ar.seconds_arrangement},
                          {"topology", ar.seconds_topology},
                          {"prune", ar.seconds_prune},

@@ -149,8 +149,9 @@ class Cutter : public ArrangementOwner {
     std::vector<Traits::Curve_2> curves;
     curves.reserve(in_.segments.size());
     for (const InputSegment& s : in_.segments) {
-      const Point p = segment_point(s, s.t0), q = segment_point(s, s.t1);
-      if (p == q) continue;  // cannot happen for t1 > t0 and a != b
+      const Point p = s.moved_start ? Point(s.start.x(), s.start.y()) : segment_point(s, s.t0);
+      const Point q = s.moved_end ? Point(s.end.x(), s.end.y()) : segment_point(s, s.t1);
+      if (p == q) continue;  // cannot happen for t1 > t0 and a != b, nor for a piece (near_crossings.cpp)
       curves.emplace_back(SegTraits::Curve_2(p, q), s.origin);
     }
     out_.seconds_curves = seconds_since(t0);
@@ -691,6 +692,23 @@ class Cutter : public ArrangementOwner {
 };
 
 }  // namespace
+
+bool crossings_coincide(const PreparedInput& in, const std::vector<std::pair<int, int>>& pairs) {
+  // The first pair's crossing, exactly; then whether every other pair's two
+  // lines pass through it (most groups of near crossings fail at their
+  // first test, decided by the interval filter without exact arithmetic).
+  auto line_of = [&](int k) {
+    const InputSegment& s = in.segments[static_cast<std::size_t>(k)];
+    return K::Line_2(segment_point(s, 0.0), segment_point(s, 1.0));
+  };
+  if (pairs.empty()) return true;
+  const auto hit = CGAL::intersection(line_of(pairs.front().first), line_of(pairs.front().second));
+  const Point* at = hit ? boost::get<Point>(&*hit) : nullptr;
+  if (!at) return false;  // parallel or the same line: no single point
+  for (const auto& [i, j] : pairs)
+    if (!line_of(i).has_on(*at) || !line_of(j).has_on(*at)) return false;
+  return true;
+}
 
 ArrangementResult cut_arrangement(const PreparedInput& in, const std::vector<Vec2>& hole_points,
                                   const std::vector<Vec2>& locate, const SliverFilter& sliver,

@@ -4,6 +4,7 @@
 //
 //   cut.cpp          orchestration, points, report
 //   prepare.cpp      lines -> input segments (clip, extend, drop short)
+//   near_crossings.cpp  crossings closer than the snap length -> one point
 //   cut_cgal.cpp     exact arrangement: build, prune, classify, hole points,
 //                    sliver merging, artificial cuts, face extraction
 //   blocks.cpp       faces (doubles) -> Blocks (clean, check, moments, layer)
@@ -40,6 +41,11 @@ struct InputSegment {
   Vec2 b{0, 0};
   double t0 = 0, t1 = 1;
   int origin = 0;
+  // A piece of a segment rerouted through merged crossings
+  // (near_crossings.cpp) starts or ends at such a point instead of at
+  // a + t0 (b - a) or a + t1 (b - a).
+  bool moved_start = false, moved_end = false;
+  Vec2 start{0, 0}, end{0, 0};
 };
 
 struct PreparedInput {
@@ -58,6 +64,20 @@ struct PreparedInput {
 };
 
 PreparedInput prepare_segments(const LineModel& lines, const CutOptions& options);
+
+// Crossings of the input segments that lie within the snap length of each
+// other (joints that nearly meet at one point) are merged into one point,
+// and every segment through them is rerouted through it (near_crossings.cpp).
+struct NearCrossings {
+  long long crossings = 0;  // crossings of the input segments found (doubles)
+  long long merged = 0;     // groups of near crossings merged into one point
+  long long rerouted = 0;   // segments rerouted through a merged point
+};
+NearCrossings merge_near_crossings(PreparedInput& in);
+// True when the lines of the segments of every pair cross at one and the
+// same point, in exact arithmetic (cut_cgal.cpp). The segments are taken
+// as given by prepare_segments (not yet rerouted).
+bool crossings_coincide(const PreparedInput& in, const std::vector<std::pair<int, int>>& pairs);
 
 // The rule that gives an edge covered by several origins one set: the domain
 // boundary wins, then excavation outlines, then the lowest joint set id, then
