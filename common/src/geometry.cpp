@@ -6,9 +6,14 @@
 namespace dda {
 
 double signed_area(const Polygon2& poly) {
+  // About the first vertex, not the origin: a 10 m square at x, y = 1e12
+  // has cross products of 1e24 about the origin, whose rounding (1e8) buries
+  // its 100 m^2; about its own corner they are exact.
   double twice = 0;
   const std::size_t n = poly.size();
-  for (std::size_t i = 0; i < n; ++i) twice += cross(poly[i], poly[(i + 1) % n]);
+  if (n < 3) return 0;
+  const Vec2 o = poly[0];
+  for (std::size_t i = 1; i + 1 < n; ++i) twice += cross(poly[i] - o, poly[i + 1] - o);
   return 0.5 * twice;
 }
 

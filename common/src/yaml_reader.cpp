@@ -60,7 +60,9 @@ std::string Range::describe() const {
            (hi_open ? ")" : "]");
   if (has_lo) return std::string(lo_open ? "> " : ">= ") + format_number(lo);
   if (has_hi) return std::string(hi_open ? "< " : "<= ") + format_number(hi);
-  return "a number";
+  // Range::any() still bounds a number by +-1e300 (so that sums and squares
+  // of inputs stay finite): say so, rather than "must be a number".
+  return "at most 1e+300 in magnitude";
 }
 
 YamlNode::YamlNode(std::shared_ptr<const Document> doc, YAML::Node node, std::string path, int parent_line)

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "builder.hpp"
+#include "dda/common/coordinate_range.hpp"
 #include "dda/common/provenance.hpp"
 #include "dda/common/scenario.hpp"
 
@@ -66,6 +67,8 @@ DlResult generate_from_scenario(const YamlNode& root) {
   b.seed = scenario_seed(root);
   b.report["seed"] = b.seed;
   detail::read_domain(root, b);
+  // The domain first, before any joint is generated in it.
+  check_coordinate_range(b.model.domain, root.file());
   detail::read_excavations(root, b);
   detail::read_joint_sets(root, b);
   detail::read_layering(root, b);
@@ -74,6 +77,7 @@ DlResult generate_from_scenario(const YamlNode& root) {
   detail::read_geometry(root, b);
   detail::read_points(root, b);
   detail::add_totals_to_report(b);
+  check_coordinate_range(b.model, root.file());
 
   Provenance& p = b.model.provenance;
   p.scenario_text = root.source_text();

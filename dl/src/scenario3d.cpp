@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "builder.hpp"  // detail::format_number
+#include "dda/common/coordinate_range.hpp"
 #include "dda/common/provenance.hpp"
 #include "dda/common/scenario.hpp"
 #include "scenario3d_builder.hpp"
@@ -95,6 +96,8 @@ DlResult3 generate_3d_from_scenario(const YamlNode& root) {
   b.report["dimension"] = 3;
   b.report["seed"] = b.seed;
   detail::read_domain3(root, b);
+  // The domain first, before any fracture is generated in it.
+  check_coordinate_range(std::vector<Vec3>{b.model.domain.lo, b.model.domain.hi}, root.file());
   detail::read_fracture_sets3(root, b);
   detail::read_persistent_sets3(root, b);
   detail::read_planes3(root, b);
@@ -104,6 +107,7 @@ DlResult3 generate_3d_from_scenario(const YamlNode& root) {
   detail::read_points3(root, b);
   detail::read_trace_planes3(root, b);
   detail::add_measures_to_report3(b);
+  check_coordinate_range(b.model, root.file());
 
   Provenance& p = b.model.provenance;
   p.scenario_text = root.source_text();

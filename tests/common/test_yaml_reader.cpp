@@ -102,6 +102,13 @@ TEST(YamlReader, DegeneratePolygonIsRejected) {
   EXPECT_EQ(error_of([&] { root.polygon("p"); }), "p.yaml:1: p must enclose a non-zero area.");
 }
 
+TEST(YamlReader, HugeNumbersAreRefusedForTheirSizeNotAsNoNumber) {
+  // 1.1e300 is a number; it is beyond the +-1e300 every input is held to,
+  // and the sentence says that (it used to say "must be a number").
+  const YamlNode root = YamlNode::load_string("x: 1.1e300\n", "h.yaml");
+  EXPECT_EQ(error_of([&] { root.number("x"); }), "h.yaml:1: x must be at most 1e+300 in magnitude, got 1.1e+300.");
+}
+
 TEST(Scenario, UnknownTopLevelSectionIsReported) {
   const std::string path = ::testing::TempDir() + "/unknown_section.yaml";
   FILE* f = std::fopen(path.c_str(), "w");

@@ -1,6 +1,7 @@
 // dda dc lines.h5 -o blocks.h5       (2D)
 // dda dc fractures.h5 -o blocks3d.h5  (3D)
 #include "commands.hpp"
+#include "dda/common/coordinate_range.hpp"
 #include "dda/common/error.hpp"
 #include "dda/common/model_io.hpp"
 #include "dda/common/model_io3.hpp"
@@ -38,10 +39,11 @@ void add_dc_command(CLI::App& app, const GlobalOptions& global) {
         throw InputError("--min-area, --max-aspect and --slivers apply to 2D cuts; " + opt->input +
                          " is a 3D fractures file.");
       const FractureModel fractures = read_fractures_h5(opt->input);
+      check_coordinate_range(fractures, opt->input);
       dc::Cut3dOptions options = cut3d_options_of(fractures);
       if (!opt->finite.empty())
         options.finite_fractures = opt->finite == "glue" ? dc::FiniteFractures::Glue : dc::FiniteFractures::Through;
-      const dc::Cut3dResult cut = dc::cut_blocks_3d(fractures, options);
+      const dc::Cut3dResult cut = naming_input(opt->input, [&] { return dc::cut_blocks_3d(fractures, options); });
       write_polyhedra_h5(opt->output, cut.model);
       if (!opt->vtk.empty()) write_polyhedra_vtu(opt->vtk, cut.model);
       if (!opt->report.empty()) write_json(opt->report, cut.report);
@@ -51,9 +53,10 @@ void add_dc_command(CLI::App& app, const GlobalOptions& global) {
     if (!opt->finite.empty())
       throw InputError("--finite-fractures applies to 3D cuts; " + opt->input + " is not a fractures file.");
     const LineModel lines = read_lines_h5(opt->input);
+    check_coordinate_range(lines, opt->input);
     dc::CutOptions options = cut_options_of(lines);
     apply(opt->slivers, options);
-    const dc::CutResult cut = dc::cut_blocks(lines, options);
+    const dc::CutResult cut = naming_input(opt->input, [&] { return dc::cut_blocks(lines, options); });
     write_blocks_h5(opt->output, cut.model);
     if (!opt->vtk.empty()) write_blocks_vtu(opt->vtk, cut.model);
     if (!opt->report.empty()) write_json(opt->report, cut.report);

@@ -73,6 +73,9 @@ Job job_from_ana(const std::string& text, const std::string& label, const BlockM
   if (!quiet)
     for (const std::string& w : imp.warnings) std::cerr << "dda: note: " << w << "\n";
   job.scenario = std::move(imp.scenario);
+  // What the model still refuses (a fixed point of the .geo outside every
+  // block) is a problem of these two files; say which.
+  naming_input(label + " with " + blocks_path, [&] { return df::build_model(job.scenario.input); });
   df::Results& r = job.results;
   r.source.provenance.scenario_path = label;
   r.source.provenance.scenario_text = text;

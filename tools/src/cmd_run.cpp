@@ -107,7 +107,7 @@ void add_run_command(CLI::App& app, const GlobalOptions& global) {
     say(global.quiet, dl::format_report(dl.report));
     say(global.quiet, "DL: " + std::to_string(dl.model.lines.size()) + " lines written to " + lines_h5 + "\n");
 
-    const dc::CutResult cut = dc::cut_blocks(dl.model, cut_options);
+    const dc::CutResult cut = naming_input(opt->scenario, [&] { return dc::cut_blocks(dl.model, cut_options); });
     const std::string blocks_h5 = (dir / "blocks.h5").string();
     write_blocks_h5(blocks_h5, cut.model);
     write_json((dir / "dc_report.json").string(), cut.report);

@@ -1,5 +1,6 @@
 #include "pipeline.hpp"
 
+#include <cctype>
 #include <filesystem>
 #include <iostream>
 #include <sstream>
@@ -100,6 +101,15 @@ void warn_of_lost_area(const BlockModel& blocks) {
     << 100 * lost / rock << " %) were dropped as degenerate faces (joints nearly meeting at one point); "
     << "the cut report (--report) lists them under `degenerate`\n";
   std::cerr << s.str();
+}
+
+std::string continuing(const std::string& sentence) {
+  // "The domain ..." -> "the domain ..."; an acronym ("STL ...") keeps its
+  // capitals.
+  std::string s = sentence;
+  if (s.size() > 1 && std::isupper(static_cast<unsigned char>(s[0])) && !std::isupper(static_cast<unsigned char>(s[1])))
+    s[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(s[0])));
+  return s;
 }
 
 void make_dir(const std::filesystem::path& dir) {

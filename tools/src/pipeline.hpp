@@ -8,6 +8,7 @@
 #include <string>
 
 #include "dda/common/block_model.hpp"
+#include "dda/common/error.hpp"
 #include "dda/common/line_model.hpp"
 #include "dda/dc/cut.hpp"
 #include "dda/dl/scenario3d.hpp"
@@ -58,6 +59,19 @@ std::string describe_cut(const BlockModel& blocks, const std::string& path);
 // nearly meeting at one point round to a face that is no simple polygon).
 // Nothing below 1e-9 of the domain. The report's `degenerate` lists them.
 void warn_of_lost_area(const BlockModel& blocks);
+
+// Runs fn; an input error it throws is said again after the name of the file
+// it came from ("l.h5: the domain polygon has no area ..."): the cutters see
+// models, not files.
+std::string continuing(const std::string& sentence);
+template <class Fn>
+auto naming_input(const std::string& file, Fn&& fn) -> decltype(fn()) {
+  try {
+    return fn();
+  } catch (const InputError& e) {
+    throw InputError(file + ": " + continuing(e.what()));
+  }
+}
 
 // Creates a folder (and its parents); InputError naming it if that fails.
 void make_dir(const std::filesystem::path& dir);

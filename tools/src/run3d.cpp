@@ -44,14 +44,15 @@ void run_pipeline_3d(const YamlNode& root, const fs::path& dir, const OutputOpti
     const LineModel lines = dl::trace_section(dl.model, dl::trace_frame(t.point, t.dip_deg, t.dip_direction_deg));
     const std::string lines_h5 = (sections / (t.name + ".lines.h5")).string();
     write_lines_h5(lines_h5, lines);
-    const dc::CutResult cut2d = dc::cut_blocks(lines, dc::parse_cut_options(std::nullopt));
+    const dc::CutResult cut2d =
+        naming_input(root.file(), [&] { return dc::cut_blocks(lines, dc::parse_cut_options(std::nullopt)); });
     const std::string blocks_h5 = (sections / (t.name + ".blocks.h5")).string();
     write_blocks_h5(blocks_h5, cut2d.model);
     say(quiet, "trace plane " + t.name + ": " + std::to_string(lines.lines.size()) + " lines, " +
                    std::to_string(cut2d.model.blocks.size()) + " 2D blocks written to " + blocks_h5 + "\n");
   }
 
-  const dc::Cut3dResult cut = dc::cut_blocks_3d(dl.model, cut_options);
+  const dc::Cut3dResult cut = naming_input(root.file(), [&] { return dc::cut_blocks_3d(dl.model, cut_options); });
   const std::string blocks_h5 = (dir / "blocks3d.h5").string();
   write_polyhedra_h5(blocks_h5, cut.model);
   write_json((dir / "dc_report.json").string(), cut.report);
