@@ -36,27 +36,18 @@ runs headless (Agg). Any problem is one line on stderr and exit status 2.
 """
 
 import argparse
-import errno
 import math
 import os
 import sys
 
-PROG = "dda_plot.py"
+from plot_io import PROG, fail, save_atomically
+
 POINT_STYLE = {  # kind code -> (marker, colour, label); codes as in docs/formats.md
     0: ("^", "black", "fixed point"),
     1: ("v", "#d62728", "load point"),
     2: ("o", "#1f77b4", "measurement point"),
     3: ("x", "#555555", "hole point"),
 }
-
-
-def fail(message):
-    """One sentence on stderr, exit status 2."""
-    message = message.rstrip()
-    if not message.endswith("."):
-        message += "."
-    print(f"{PROG}: {message}", file=sys.stderr)
-    sys.exit(2)
 
 
 try:
@@ -71,6 +62,9 @@ try:
     from matplotlib.patches import Polygon as PolygonPatch
 except ImportError as exc:  # pragma: no cover - depends on the machine
     fail(f"needs numpy, h5py and matplotlib ({exc}); run it with /usr/bin/python3")
+
+from results_data import RESULTS_FORMATS  # noqa: E402 (needs numpy)
+from results_quantities import STRESS_CHOICES  # noqa: E402
 
 
 # ----------------------------------------------------------------- reading
@@ -473,35 +467,61 @@ def plot_3d(paths, formats, labels, a):
 # -------------------------------------------------------------------- main
 
 
-def sync_folder(folder):
-    fd = os.open(folder, os.O_RDONLY | os.O_DIRECTORY)
-    try:
-        os.fsync(fd)
-    except OSError as exc:
-        if exc.errno != errno.EINVAL:  # a filesystem that cannot sync folders
-            raise
-    finally:
-        os.close(fd)
+# ----------------------------------------------------------------- results
+RESULTS_ONLY_KINDS = ("sections", "contacts", "histories", "energy", "steps", "all")
+FIGURE_EXTENSIONS = (".png", ".svg", ".pdf")
 
 
-def save_atomically(fig, out):
-    folder, base = os.path.split(os.path.abspath(out))
-    ext = os.path.splitext(base)[1].lower()
-    tmp = os.path.join(folder, f".{base}.tmp-{os.getpid()}{ext}")
+def plot_results(a):
+    """A results file: one figure (-o FIG.png) or, when -o is a folder, every
+    figure that applies (--kind all, the default there) as KIND.png."""
+    import results_figures as rf
+    from results_data import ResultsError, read_results
+
     try:
-        fig.savefig(tmp, format=ext[1:], dpi=150, bbox_inches="tight")
-        # On the disk before the rename, and the rename itself after it, as
-        # the C++ writer does (common/src/atomic_file.cpp): a crash must not
-        # leave the figure's name on an empty file.
-        with open(tmp, "rb") as f:
-            os.fsync(f.fileno())
-        os.replace(tmp, out)
-        sync_folder(folder)
-    except OSError as exc:
-        fail(f"{out}: cannot write: {exc.strerror or exc}")
-    finally:
-        if os.path.exists(tmp):
-            os.remove(tmp)
+        r = read_results(a.files[0], h5py)
+    except ResultsError as exc:
+        fail(str(exc))
+    to_folder = os.path.splitext(a.output)[1].lower() not in FIGURE_EXTENSIONS
+    if to_folder:
+        parent = os.path.dirname(os.path.abspath(a.output))
+        if not os.path.isdir(parent):
+            fail(f"{a.output}: cannot write: the folder {parent} does not exist")
+        if os.path.exists(a.output) and not os.path.isdir(a.output):
+            fail(f"{a.output}: is a file; give a folder, or a figure ending in .png, .svg or .pdf")
+        os.makedirs(a.output, exist_ok=True)
+        kinds = rf.kinds_of(r) if a.kind in ("auto", "all") else (a.kind,)
+    else:
+        if a.kind == "all":
+            fail(f"--kind all writes several figures: give -o a folder, not {a.output}")
+        folder = os.path.dirname(os.path.abspath(a.output))
+        if not os.path.isdir(folder):
+            fail(f"{a.output}: cannot write: the folder {folder} does not exist")
+        kinds = ("blocks" if a.kind == "auto" else a.kind,)
+    for kind in kinds:
+        problem = rf.check_kind(r, kind)
+        if problem:
+            fail(problem)
+    problem = rf.check_times(r, a.times or [])
+    if problem:
+        fail(problem)
+    opts = rf.FigureOptions(a.times, a.color_by, a.component, a.vectors, a.look, a.section)
+    try:
+        rf.parse_choices(r, opts)
+    except ValueError as exc:
+        fail(str(exc))
+    for kind in kinds:
+        fig, note = rf.draw(r, kind, opts)
+        if a.title:
+            fig.suptitle(a.title)
+        out = os.path.join(a.output, f"{kind}.png") if to_folder else a.output
+        save_atomically(fig, out)
+        rf.close(fig)
+        if note:
+            print(f"note: {note}.")
+        if to_folder:
+            print(f"{kind}: {out}")
+    return 0
 
 
 class Parser(argparse.ArgumentParser):
@@ -515,7 +535,8 @@ def main(argv=None):
     p.add_argument("files", nargs="+", metavar="FILE.h5",
                    help="dda-lines or dda-blocks files (--kind compare/spectra: one dda compare/spectra CSV)")
     p.add_argument("-o", "--output", required=True, metavar="OUT", help="OUT.png, OUT.svg or OUT.pdf")
-    p.add_argument("--kind", choices=["auto", "lines", "blocks", "histograms", "compare", "spectra"],
+    p.add_argument("--kind", choices=["auto", "lines", "blocks", "histograms", "compare", "spectra", "sections",
+                                      "contacts", "histories", "energy", "steps", "all"],
                    default="auto")
     p.add_argument("--labels", nargs="+", metavar="LABEL", help="one label per file")
     p.add_argument("--title", help="figure title")
@@ -529,8 +550,25 @@ def main(argv=None):
                    help="3D blocks: move bodies apart by F times their offset from the centre")
     p.add_argument("--view", type=float, nargs=2, default=[25.0, -60.0], metavar=("ELEV", "AZIM"),
                    help="3D: camera elevation and azimuth, degrees (default 25 -60)")
+    r = p.add_argument_group("results files (dda-results, dda-results3d)")
+    r.add_argument("--times", type=float, nargs="+", metavar="T",
+                   help="blocks: draw the frames nearest these times, s (default: the last)")
+    r.add_argument("--color-by", choices=["displacement", "velocity", "stress"], default="displacement",
+                   help="blocks, sections: colour blocks by |u|, |v| or a stress component")
+    r.add_argument("--component", choices=list(STRESS_CHOICES), default="mean",
+                   help="--color-by stress: the component (default mean normal stress)")
+    r.add_argument("--vectors", action="store_true", help="blocks: draw displacement vectors")
+    r.add_argument("--look", nargs="+", metavar="DIR",
+                   help="3D: lines of sight, TREND/PLUNGE or north, south, east, west, plan "
+                        "(default north west plan)")
+    r.add_argument("--section", nargs="+", metavar="AXIS=VALUE",
+                   help="3D sections: planes x=..., y=... or z=... (m; default: through the middle)")
     a = p.parse_args(argv)
 
+    if a.kind not in ("compare", "spectra") and len(a.files) == 1 and file_format(a.files[0]) in RESULTS_FORMATS:
+        return plot_results(a)
+    if a.kind in RESULTS_ONLY_KINDS:
+        fail(f"--kind {a.kind} draws a results file (dda-results or dda-results3d)")
     ext = os.path.splitext(a.output)[1].lower()
     if ext not in (".png", ".svg", ".pdf"):
         fail(f"{a.output}: the output must end in .png, .svg or .pdf")
