@@ -64,7 +64,7 @@ except ImportError as exc:  # pragma: no cover - depends on the machine
     fail(f"needs numpy, h5py and matplotlib ({exc}); run it with /usr/bin/python3")
 
 from results_data import RESULTS_FORMATS  # noqa: E402 (needs numpy)
-from results_quantities import STRESS_CHOICES  # noqa: E402
+from results_quantities import STRESS_2D, STRESS_CHOICES  # noqa: E402
 
 
 # ----------------------------------------------------------------- reading
@@ -482,7 +482,12 @@ def plot_results(a):
         r = read_results(a.files[0], h5py)
     except ResultsError as exc:
         fail(str(exc))
-    to_folder = os.path.splitext(a.output)[1].lower() not in FIGURE_EXTENSIONS
+    ext = os.path.splitext(a.output)[1].lower()
+    to_folder = os.path.isdir(a.output) or ext == ""
+    if not to_folder and ext not in FIGURE_EXTENSIONS:
+        fail(f"{a.output}: give a figure ending in .png, .svg or .pdf, or a folder for all the figures")
+    if r.dim == 2 and a.component not in ("mean",) + STRESS_2D:
+        fail(f"--component {a.component}: a 2D results file has the stresses mean, {', '.join(STRESS_2D)}")
     if to_folder:
         parent = os.path.dirname(os.path.abspath(a.output))
         if not os.path.isdir(parent):
@@ -519,8 +524,6 @@ def plot_results(a):
         rf.close(fig)
         if note:
             print(f"note: {note}.")
-        if to_folder:
-            print(f"{kind}: {out}")
     return 0
 
 
@@ -565,7 +568,9 @@ def main(argv=None):
                    help="3D sections: planes x=..., y=... or z=... (m; default: through the middle)")
     a = p.parse_args(argv)
 
-    if a.kind not in ("compare", "spectra") and len(a.files) == 1 and file_format(a.files[0]) in RESULTS_FORMATS:
+    if a.kind not in ("compare", "spectra") and any(file_format(f) in RESULTS_FORMATS for f in a.files):
+        if len(a.files) != 1:
+            fail(f"a results file is drawn on its own; got {len(a.files)} files")
         return plot_results(a)
     if a.kind in RESULTS_ONLY_KINDS:
         fail(f"--kind {a.kind} draws a results file (dda-results or dda-results3d)")

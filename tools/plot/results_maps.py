@@ -12,10 +12,11 @@ from matplotlib.colors import Normalize
 from matplotlib.lines import Line2D
 
 import results_views3d as v3
-from results_quantities import block_quantity, readable_unit
+from results_quantities import block_quantity, readable_unit, shared_scale
 
 STATE_STYLE = {0: ("0.55", "open"), 1: ("#e66101", "sliding"), 2: ("#2c7bb6", "locked")}
 BLOCK_GREY = "0.88"
+MAX_ARROWS = 400
 
 
 def time_label(r, frame):
@@ -63,70 +64,68 @@ def coloured_polygons(ax, polys, values, quantity, limits):
     return pc
 
 
-def draw_vectors(ax, origins, vectors):
-    """Displacement arrows, with a key giving the length an arrow stands for."""
+def draw_vectors(ax, origins, vectors, extent):
+    """Displacement arrows, enlarged so that the longest is a tenth of the
+    picture; returns the words for the title that say by how much."""
     length = np.linalg.norm(vectors, axis=1)
     if len(length) == 0 or not np.any(length > 0):
-        return
-    q = ax.quiver(origins[:, 0], origins[:, 1], vectors[:, 0], vectors[:, 1], color="black",
-                  angles="xy", scale_units="xy", scale=None, width=0.003, zorder=6)
+        return ""
     top = float(length.max())
+    enlarge = 0.1 * extent / top
+    every = max(1, len(origins) // MAX_ARROWS)  # a readable number of arrows
+    origins, vectors = origins[::every], vectors[::every]
+    ax.quiver(origins[:, 0], origins[:, 1], vectors[:, 0] * enlarge, vectors[:, 1] * enlarge, color="black",
+              angles="xy", scale_units="xy", scale=1, width=0.003, zorder=6)
     factor, unit = readable_unit([top], "m")
-    ax.quiverkey(q, 0.88, 1.02, top, f"|u| = {top * factor:.3g} {unit}", labelpos="W",
-                 coordinates="axes", fontproperties={"size": 7})
+    which = "" if every == 1 else f" (every {every}th block)"
+    return f"\narrows{which}: displacement, longest {top * factor:.3g} {unit}, drawn {enlarge:.3g}× enlarged"
+
+
+def plane_extent(points):
+    return float(np.max(np.ptp(points, axis=0))) if len(points) else 1.0
 
 
 def deformed_2d(r, frames, color_by, component, vectors):
     quantities = [block_quantity(r, k, color_by, component) for k in frames]
-    limits = _shared_limits(quantities)
+    factor, label, limits = shared_scale(quantities)
     fig, axes = plt.subplots(1, len(frames), figsize=(6.2 * len(frames) + 1, 5.2), squeeze=False)
     for ax, k, q in zip(axes.flat, frames, quantities):
-        values, label = q.scaled()
+        values = q.scaled_by(factor)
         verts = r.frame_vertices[k]
         pc = coloured_polygons(ax, r.polygons(verts), values, q, limits)
+        arrows = ""
         if vectors:
-            draw_vectors(ax, r.block_means(verts), r.block_means(verts) - r.block_means(r.vertices0))
-        finish_plane(ax, verts, "x (m)", "y (m)", time_label(r, k))
+            arrows = draw_vectors(ax, r.block_means(verts), r.block_means(verts) - r.block_means(r.vertices0),
+                                  plane_extent(verts))
+        finish_plane(ax, verts, "x (m)", "y (m)", time_label(r, k) + arrows)
         fig.colorbar(pc, ax=ax, label=label, shrink=0.85)
     fig.suptitle(f"Deformed blocks coloured by {quantities[0].label}", fontsize=11)
     fig.tight_layout()
     return fig
 
 
-def _shared_limits(quantities):
-    """One colour scale for all panels, so that colours compare across times."""
-    lo, hi = [], []
-    for q in quantities:
-        a, b = q.norm_limits(q.scaled()[0])
-        lo.append(a)
-        hi.append(b)
-    if quantities[0].signed:
-        top = max(max(abs(x) for x in lo), max(hi))
-        return -top, top
-    return min(lo), max(hi)
-
-
 def deformed_3d(r, frames, color_by, component, vectors, looks):
     """One row per frame, one column per view direction."""
     quantities = [block_quantity(r, k, color_by, component) for k in frames]
-    limits = _shared_limits(quantities)
+    factor, label, limits = shared_scale(quantities)
     views = [v3.View(*tp) for tp in looks]
-    fig, axes = plt.subplots(len(frames), len(views), figsize=(5.0 * len(views) + 1, 4.4 * len(frames)),
-                             squeeze=False)
+    fig, axes = plt.subplots(len(frames), len(views), figsize=(5.0 * len(views) + 1, 4.6 * len(frames)),
+                             squeeze=False, layout="constrained")
     for row, (k, q) in enumerate(zip(frames, quantities)):
-        values, label = q.scaled()
+        values = q.scaled_by(factor)
         verts = r.frame_vertices[k]
         for col, view in enumerate(views):
             ax = axes[row, col]
             polys, blocks = v3.view_polygons(r, verts, view)
             pc = coloured_polygons(ax, polys, values[blocks], q, limits)
+            screen = np.vstack(polys) if polys else np.zeros((0, 2))
+            arrows = ""
             if vectors:
                 means = r.block_means(verts)
                 du = means - r.block_means(r.vertices0)
-                draw_vectors(ax, view.project(means), view.project(du))
+                arrows = draw_vectors(ax, view.project(means), view.project(du), plane_extent(screen))
             xlabel, ylabel = view.axis_labels()
-            finish_plane(ax, np.vstack(polys) if polys else np.zeros((0, 2)), xlabel, ylabel,
-                         f"{view.title}\n{time_label(r, k)}")
+            finish_plane(ax, screen, xlabel, ylabel, f"{view.title}\n{time_label(r, k)}{arrows}")
         fig.colorbar(pc, ax=list(axes[row]), label=label, shrink=0.85)
     fig.suptitle(f"Deformed blocks coloured by {quantities[0].label}", fontsize=11)
     return fig
@@ -138,7 +137,8 @@ def sections_3d(r, frame, color_by, component, sections):
     limits = q.norm_limits(values)
     verts = r.frame_vertices[frame]
     sections = sections or v3.default_sections(verts)
-    fig, axes = plt.subplots(1, len(sections), figsize=(5.4 * len(sections) + 1, 4.8), squeeze=False)
+    fig, axes = plt.subplots(1, len(sections), figsize=(5.4 * len(sections) + 1, 4.8), squeeze=False,
+                             layout="constrained")
     pc = None
     for ax, (axis, value) in zip(axes.flat, sections):
         polys, blocks = v3.section_polygons(r, verts, axis, value)

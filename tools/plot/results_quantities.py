@@ -60,6 +60,9 @@ class Quantity:
         factor, unit = readable_unit(self.values, self.unit)
         return self.values * factor, f"{self.label} ({unit})"
 
+    def scaled_by(self, factor):
+        return self.values * factor
+
     def norm_limits(self, scaled_values):
         """Colour limits: 0..max for a magnitude, symmetric about 0 when signed."""
         v = scaled_values[np.isfinite(scaled_values)]
@@ -98,3 +101,12 @@ def block_quantity(r, frame, color_by, component):
         values = s[:, names.index(component)]
         label = f"block stress {component}"
     return Quantity(values, "Pa", label + ", tension +", True)
+
+
+def shared_scale(quantities):
+    """(factor, colour-bar label, colour limits) common to several frames of
+    one quantity, so that a colour means the same value in every panel."""
+    q = quantities[0]
+    everything = np.concatenate([x.values for x in quantities])
+    factor, unit = readable_unit(everything, q.unit)
+    return factor, f"{q.label} ({unit})", q.norm_limits(everything * factor)

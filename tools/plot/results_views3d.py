@@ -79,7 +79,10 @@ def describe_direction(v):
     plunge = -math.degrees(math.asin(max(-1.0, min(1.0, v[2]))))
     if abs(plunge) < 1e-9:
         return f"horizontal, towards {trend:03.0f}° (m)"
-    return f"towards {trend:03.0f}°, plunge {plunge:.0f}° (m)"
+    if abs(abs(plunge) - 90) < 1e-9:
+        return "z up (m)" if plunge < 0 else "z down (m)"
+    slope = f"rising {-plunge:.0f}°" if plunge < 0 else f"plunging {plunge:.0f}°"
+    return f"towards {trend:03.0f}°, {slope} (m)"
 
 
 def view_polygons(r, vertices, view):
