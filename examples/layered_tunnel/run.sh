@@ -3,7 +3,8 @@
 # (OUT=... another folder; scripts/check_examples.sh uses it).
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
-dda="${DDA:-$here/../../build/bin/dda}"
+source "$here/../find_dda.sh"
+dda="$(find_dda)"
 out="${OUT:-$here/out}"
 figs="$out/figures"
 rm -rf "$out"

@@ -6,7 +6,8 @@
 # A run interrupted (Ctrl-C) continues with: dda df --resume out/results.h5
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
-dda="${DDA:-$here/../../build/bin/dda}"
+source "$here/../find_dda.sh"
+dda="$(find_dda)"
 out="${OUT:-$here/out}"
 rm -rf "$out"
 mkdir -p "$out/figures"

@@ -4,12 +4,12 @@
 # volume and sliding direction (check.py; exits non-zero if they are off).
 # What the run prints that README.md quotes is also saved (wedge.txt,
 # check.txt) for scripts/check_readme_numbers.py.
-# Environment: DDA (the program; default build/bin/dda), OUT (output folder;
+# Environment: DDA (the program; default dda on PATH, else build/bin/dda), OUT (output folder;
 # default examples/wedge3d/out).
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
-root="$(cd "$here/../.." && pwd)"
-DDA="${DDA:-$root/build/bin/dda}"
+source "$here/../find_dda.sh"
+DDA="$(find_dda)"
 OUT="${OUT:-$here/out}"
 "$DDA" run "$here/wedge3d.yaml" -o "$OUT"
 "$DDA" wedge --plane 51.4/65.8 --plane 51.4/295.2 --phi 30 --azimuth 0 | tee "$OUT/wedge.txt"
