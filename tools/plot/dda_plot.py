@@ -231,7 +231,7 @@ def draw_blocks(ax, m, names=True):
     return handles, bounds
 
 
-def finish_map(ax, bounds, title, handles):
+def finish_map(ax, bounds, title, handles, axis_labels=("x (m)", "y (m)")):
     ax.set_aspect("equal")
     if bounds:
         allp = np.vstack(bounds)
@@ -239,14 +239,15 @@ def finish_map(ax, bounds, title, handles):
         pad = 0.03 * max(hi[0] - lo[0], hi[1] - lo[1], 1e-9)
         ax.set_xlim(lo[0] - pad, hi[0] + pad)
         ax.set_ylim(lo[1] - pad, hi[1] + pad)
-    ax.set_xlabel("x (m)")
-    ax.set_ylabel("y (m)")
+    ax.set_xlabel(axis_labels[0])
+    ax.set_ylabel(axis_labels[1])
     ax.set_title(title, fontsize=10)
     if handles:
         ax.legend(handles=handles, fontsize=7, loc="upper right", framealpha=0.85)
 
 
-def plot_maps(models, labels, kind, names):
+def plot_maps(models, labels, kind, names, axis_labels):
+    """Each file in its panel; the panel says what it holds (or --labels)."""
     n = len(models)
     cols = min(n, 3)
     rows = (n + cols - 1) // cols
@@ -257,11 +258,12 @@ def plot_maps(models, labels, kind, names):
             fail(f"{m.path}: is a {m.format} file, --kind {kind} needs a {want} file")
         if m.format == "dda-lines":
             handles, bounds = draw_lines(ax, m, names)
-            sub = f"{len(m.endpoints)} lines"
+            sets = len(set(int(x) for x in m.line_set))
+            sub = f"{len(m.endpoints)} joint traces in {sets} set{'s' if sets != 1 else ''}"
         else:
             handles, bounds = draw_blocks(ax, m, names)
             sub = f"{m.num_blocks} blocks"
-        finish_map(ax, bounds, f"{label} ({sub})", handles)
+        finish_map(ax, bounds, f"{label} ({sub})" if label else sub, handles, axis_labels)
     for ax in list(axes.flat)[n:]:
         ax.set_visible(False)
     return fig
@@ -445,6 +447,8 @@ def plot_3d(paths, formats, labels, a):
     cols = min(n, 2)
     rows = (n + cols - 1) // cols
     fig = plt.figure(figsize=(7.5 * cols, 6.0 * rows))
+    # Room on the left: the z label of a 3D axes lies outside its box.
+    fig.subplots_adjust(left=0.08, right=0.95)
     for k, (path, fm, label) in enumerate(zip(paths, formats, labels)):
         ax = fig.add_subplot(rows, cols, k + 1, projection="3d")
         try:
@@ -457,6 +461,8 @@ def plot_3d(paths, formats, labels, a):
                 m = p3.read_fractures(f, arr) if fm == "dda-fractures" else p3.read_blocks3d(f, arr)
         except (OSError, KeyError, ValueError, TypeError) as exc:
             fail(f"{path}: cannot read it as a {fm} file ({exc})")
+        if label is None:
+            label = p3.describe(m, fm, set_names)
         if fm == "dda-fractures":
             p3.draw_fractures(ax, m, set_names, set_colours(len(set_names)), a.view, label)
         else:
@@ -547,6 +553,8 @@ def main(argv=None):
     p.add_argument("--fraction", action="store_true",
                    help="histograms: fraction of each file's blocks instead of counts")
     p.add_argument("--no-names", action="store_true", help="do not write point names")
+    p.add_argument("--axes", nargs=2, metavar=("XLABEL", "YLABEL"),
+                   help="2D maps: axis labels (default 'x (m)' 'y (m)'), e.g. a section's own axes")
     p.add_argument("--color", choices=["removability", "body", "layer"], default="removability",
                    help="3D blocks: colour bodies by block-theory mode (default), at random, or by bed")
     p.add_argument("--explode", type=float, default=0.0, metavar="F",
@@ -600,6 +608,8 @@ def main(argv=None):
         fail(f"--labels gives {len(a.labels)} labels for {len(a.files)} files")
     if a.bins < 1:
         fail(f"--bins must be at least 1, got {a.bins}")
+    # Without --labels a histogram legend names the files (it compares them);
+    # a map's title says what it shows instead.
     labels = a.labels or [os.path.basename(f) for f in a.files]
 
     formats = [file_format(f) for f in a.files]
@@ -608,7 +618,7 @@ def main(argv=None):
             fail("3D files (fractures, 3D blocks) cannot be drawn together with 2D lines or blocks files")
         if a.kind not in ("auto", "blocks"):
             fail(f"--kind {a.kind} is for 2D files; 3D files are drawn with --kind auto")
-        fig = plot_3d(a.files, formats, labels, a)
+        fig = plot_3d(a.files, formats, a.labels or [None] * len(a.files), a)
         if a.title:
             fig.suptitle(a.title)
         save_atomically(fig, a.output)
@@ -617,7 +627,8 @@ def main(argv=None):
     if a.kind == "histograms":
         fig = plot_histograms(models, labels, a.bins, a.fraction)
     else:
-        fig = plot_maps(models, labels, a.kind, not a.no_names)
+        fig = plot_maps(models, a.labels or [None] * len(models), a.kind, not a.no_names,
+                        a.axes or ("x (m)", "y (m)"))
     if a.title:
         fig.suptitle(a.title)
     save_atomically(fig, a.output)

@@ -50,4 +50,7 @@ def write_atomically(out, write):
 
 def save_atomically(fig, out):
     ext = os.path.splitext(out)[1].lower()
-    write_atomically(out, lambda tmp: fig.savefig(tmp, format=ext[1:], dpi=150, bbox_inches="tight"))
+    # The tight box leaves out a 3D axes' z label unless told about it.
+    labels = [ax.zaxis.label for ax in fig.axes if hasattr(ax, "zaxis")]
+    write_atomically(out, lambda tmp: fig.savefig(tmp, format=ext[1:], dpi=150, bbox_inches="tight",
+                                                  bbox_extra_artists=fig.get_default_bbox_extra_artists() + labels))

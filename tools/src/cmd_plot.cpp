@@ -19,7 +19,7 @@ void add_plot_command(CLI::App& app, const GlobalOptions& global) {
     std::vector<std::string> inputs, labels;
     std::string output, kind = "auto", title, color, color_by, component;
     std::vector<double> view, times;
-    std::vector<std::string> looks, sections;
+    std::vector<std::string> looks, sections, axes;
     bool vectors = false;
     std::optional<double> explode;
   };
@@ -39,6 +39,8 @@ void add_plot_command(CLI::App& app, const GlobalOptions& global) {
           {"auto", "lines", "blocks", "histograms", "sections", "contacts", "histories", "energy", "steps", "all"}));
   cmd->add_option("--labels", opt->labels, "Legend labels, one per file (histograms)");
   cmd->add_option("--title", opt->title, "Figure title");
+  cmd->add_option("--axes", opt->axes, "2D lines or blocks: the axis labels (default 'x (m)' 'y (m)'), e.g. a section's")
+      ->expected(2);
   cmd->add_option("--view", opt->view, "3D: camera elevation and azimuth, degrees (default 25 -60)")->expected(2);
   cmd->add_option("--explode", opt->explode, "3D blocks: move bodies apart by this factor of their offset from the centre")
       ->check(CLI::NonNegativeNumber);
@@ -83,7 +85,8 @@ void add_plot_command(CLI::App& app, const GlobalOptions& global) {
     if (!opt->color_by.empty()) args.insert(args.end(), {"--color-by", opt->color_by});
     if (!opt->component.empty()) args.insert(args.end(), {"--component", opt->component});
     if (opt->vectors) args.push_back("--vectors");
-    for (const auto& [flag, values] : {std::pair{"--look", &opt->looks}, std::pair{"--section", &opt->sections}})
+    for (const auto& [flag, values] : {std::pair{"--look", &opt->looks}, std::pair{"--section", &opt->sections},
+                                        std::pair{"--axes", &opt->axes}})
       if (!values->empty()) {
         args.push_back(flag);
         args.insert(args.end(), values->begin(), values->end());
