@@ -364,7 +364,17 @@ def read_csv_columns(path, what):
         fail(f"{path}: cannot read it as a {what} CSV: {exc}")
 
 
-def plot_spectra(path, labels):
+def readable_log_axis(axis):
+    """Ticks at 1, 2 and 5 per decade, written as plain numbers: the default
+    shows one label ("10⁰") on an axis shorter than a decade or two."""
+    from matplotlib.ticker import FuncFormatter, LogLocator, NullFormatter
+
+    axis.set_major_locator(LogLocator(base=10, subs=(1.0, 2.0, 5.0)))
+    axis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:g}"))
+    axis.set_minor_formatter(NullFormatter())
+
+
+def plot_spectra(path, labels, amplitude_unit=None):
     """`dda spectra` output: f, amplitude[, reference, ratio] or f, horizontal,
     vertical, hv (log-log, the ratio in its own panel), or T, SD, SV, PSV,
     PSA, SA (response spectra against the period)."""
@@ -382,6 +392,7 @@ def plot_spectra(path, labels):
         bottom.set_ylabel("SD")
         bottom.set_xlabel("period T (s)")
         bottom.set_xscale("log")
+        readable_log_axis(bottom.xaxis)
         for ax in (top, bottom):
             ax.grid(True, which="both", alpha=0.3)
         top.legend(loc="best")
@@ -400,7 +411,8 @@ def plot_spectra(path, labels):
                                           gridspec_kw={"height_ratios": [1, 1]})
     for k, name, colour in zip(curves, names, ["#d62728", "black"]):
         top.loglog(f, c[k], color=colour, lw=1.2, label=name)
-    top.set_ylabel("Fourier amplitude")
+    top.set_ylabel(f"Fourier amplitude ({amplitude_unit})" if amplitude_unit else "Fourier amplitude")
+    readable_log_axis(top.yaxis)
     top.grid(True, which="both", alpha=0.3)
     top.legend(loc="best")
     last = top
@@ -413,10 +425,12 @@ def plot_spectra(path, labels):
             i = int(np.nanargmax(np.where(ok, r, np.nan)))
             bottom.plot([f[i]], [r[i]], "o", color="#d62728")
             bottom.set_title(f"peak {r[i]:.3g} at {f[i]:.3g} Hz", fontsize=9, loc="right")
-        bottom.set_ylabel("H/V" if ratio_key == "hv" else "spectral ratio")
+        bottom.set_ylabel("H/V (ratio)" if ratio_key == "hv" else "spectral ratio")
+        readable_log_axis(bottom.yaxis)
         bottom.grid(True, which="both", alpha=0.3)
         last = bottom
     last.set_xlabel("frequency (Hz)")
+    readable_log_axis(last.xaxis)
     fig.tight_layout()
     return fig
 
@@ -553,6 +567,7 @@ def main(argv=None):
     p.add_argument("--fraction", action="store_true",
                    help="histograms: fraction of each file's blocks instead of counts")
     p.add_argument("--no-names", action="store_true", help="do not write point names")
+    p.add_argument("--amplitude-unit", metavar="UNIT", help="spectra: the unit of the Fourier amplitude")
     p.add_argument("--axes", nargs=2, metavar=("XLABEL", "YLABEL"),
                    help="2D maps: axis labels (default 'x (m)' 'y (m)'), e.g. a section's own axes")
     p.add_argument("--color", choices=["removability", "body", "layer"], default="removability",
@@ -599,7 +614,7 @@ def main(argv=None):
     if a.kind == "spectra":  # one CSV; --labels names the spectra
         if len(a.files) != 1:
             fail(f"--kind spectra draws one dda spectra CSV, got {len(a.files)} files")
-        fig = plot_spectra(a.files[0], a.labels or [])
+        fig = plot_spectra(a.files[0], a.labels or [], a.amplitude_unit)
         if a.title:
             fig.suptitle(a.title)
         save_atomically(fig, a.output)
