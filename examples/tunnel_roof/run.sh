@@ -18,4 +18,5 @@ echo "dda run took $(( $(date +%s) - start )) s"
 "$dda" history "$out/results.h5" --steps -o "$out/steps.csv"
 "$dda" history "$out/results.h5" --csv > "$out/history.csv"
 MPLBACKEND=Agg /usr/bin/python3 "$here/plot_tunnel_roof.py" "$out/results.h5" -o "$out/figures" | tee "$out/loosened_zone.json"
+"$dda" plot "$out/results.h5" -o "$out/figures/results" -q
 echo "figures in $out/figures; ParaView: $out/vtk/df.pvd"
