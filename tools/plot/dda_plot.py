@@ -625,7 +625,7 @@ def main(argv=None):
         fail(f"--bins must be at least 1, got {a.bins}")
     # Without --labels a histogram legend names the files (it compares them);
     # a map's title says what it shows instead.
-    labels = a.labels or [os.path.basename(f) for f in a.files]
+    labels = a.labels or (["blocks"] if len(a.files) == 1 else [os.path.basename(f) for f in a.files])
 
     formats = [file_format(f) for f in a.files]
     if any(fm in THREE_D for fm in formats):
