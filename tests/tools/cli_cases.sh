@@ -1063,7 +1063,7 @@ PY
 # 0.86488 m: +0.019 %. The DDA step integrates a constant acceleration
 # exactly, so what is left is the contact's penalty spring settling under
 # the block's weight and the first steps' open-close iterations. The test
-# allows 0.01 % to 0.03 %: a direction off by a degree (0.6 %), one step of
+# allows 0.01 % to 0.03 %: a direction 2 deg off (1 - cos 2 = 0.06 %), one step of
 # delay in the time axis (2 dt / t = 0.2 %) or a sign error all fall outside.
 case_compare_3d_sliding3d() {
   cp "$SRC/tests/data/df3_incline.yaml" . || fail "copy the fixture"
