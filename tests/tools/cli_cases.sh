@@ -1021,7 +1021,7 @@ with h5py.File('nc.h5', 'r+') as f: del f['checkpoint/contacts']" || fail "copy 
     "$DDA" plot out/results.h5 -o x.png --kind sections
   expect_error 1 "out/results.h5: --times 7 is outside the saved frames \(t = 0 to 1 s\)" -- \
     "$DDA" plot out/results.h5 -o x.png --times 7
-  expect_error 1 "--component szz: a 2D results file has the stresses mean, sxx, syy, sxy" -- \
+  expect_error 1 "dda: --component szz: a 2D results file has the stresses mean, sxx, syy, sxy" -- \
     "$DDA" plot out/results.h5 -o x.png --color-by stress --component szz
   expect_error 1 "x.jpg: give a figure ending in .png, .svg or .pdf, or a folder" -- \
     "$DDA" plot out/results.h5 -o x.jpg
@@ -1053,8 +1053,8 @@ assert lo <= 0 and hi >= 10 and hi - lo < 11, (lo, hi)
 PY
   expect_error 1 "out/results.h5: a 3D results file keeps no energy record" -- \
     "$DDA" plot out/results.h5 -o x.png --kind energy
-  expect_error 1 "--look 30: give TREND/PLUNGE" -- "$DDA" plot out/results.h5 -o x.png --look 30
-  expect_error 1 "--section q=3: give AXIS=VALUE" -- "$DDA" plot out/results.h5 -o x.png --section q=3
+  expect_error 1 "dda: --look 30: give TREND/PLUNGE" -- "$DDA" plot out/results.h5 -o x.png --look 30
+  expect_error 1 "dda: --section q=3: give AXIS=VALUE" -- "$DDA" plot out/results.h5 -o x.png --section q=3
 }
 
 # dda compare on a 3D run against dda sliding3d: the df3_incline block slides
@@ -1089,11 +1089,11 @@ e = tp["final_relative_error"]
 print("final relative error %.4f %%" % (100 * e))
 assert 1e-4 <= e <= 3e-4, e
 PY
-  expect_error 1 "--dip: is for 2D results" -- \
+  expect_error 1 "dda: --dip: is for 2D results" -- \
     "$DDA" compare out/results.h5 --point slider --dip 20 --reference ref.csv
-  expect_error 1 "--direction: give three numbers x,y,z for a 3D results file" -- \
+  expect_error 1 "dda: --direction: give three numbers x,y,z for a 3D results file" -- \
     "$DDA" compare out/results.h5 --point slider --direction 1,0 --reference ref.csv
-  expect_error 1 "--intersection: the planes 20/090 and 20/090 are parallel" -- \
+  expect_error 1 "dda: --intersection: the planes 20/090 and 20/090 are parallel" -- \
     "$DDA" compare out/results.h5 --point slider --intersection 20/090 20/090 --reference ref.csv
 }
 

@@ -12,6 +12,7 @@ from results_quantities import readable_unit
 STORED = ("kinetic", "elastic", "contact", "fixed", "bolts")
 WORK = ("gravity_work", "load_work")
 LOSSES = ("friction", "damping", "breakage", "radiation", "residual")
+MAX_LEGEND = 16  # points named in the legend; beyond, the legend would hide the curves
 
 
 def incomplete_note(r):
@@ -36,7 +37,10 @@ def histories_figure(r):
         ax.set_ylabel(f"{what_text} {what} ({shown})")
         ax.grid(alpha=0.3)
     axes[-1].set_xlabel("time (s)")
-    if names:
+    if len(names) > MAX_LEGEND:
+        axes[0].set_title(f"{len(names)} points (too many to name here; dda history lists them)", fontsize=8,
+                          loc="left")
+    elif names:
         axes[0].legend(fontsize=7, loc="best", ncol=2 if len(names) > 6 else 1)
     else:
         axes[0].text(0.5, 0.5, "the run has no measurement points", ha="center", transform=axes[0].transAxes)

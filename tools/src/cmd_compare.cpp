@@ -18,6 +18,7 @@
 #include "dda/analysis/table.hpp"
 #include "dda/common/atomic_file.hpp"
 #include "dda/common/error.hpp"
+#include "dda/common/model_io.hpp"
 #include "dda/common/output_guard.hpp"
 #include "dda/df/results.hpp"
 #include "dda/df/results3d.hpp"

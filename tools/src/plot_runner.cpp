@@ -100,7 +100,7 @@ void run_script(const std::string& script, const std::vector<std::string>& args)
   if (status != 0) {
     std::string msg = last_line(err);
     // The scripts start their one-line messages with their name.
-    for (const std::string prefix : {script + ": ", std::string("dda_plot: ")})
+    for (const std::string& prefix : {script + ": ", std::string("dda_plot: ")})
       if (msg.rfind(prefix, 0) == 0) msg = msg.substr(prefix.size());
     while (!msg.empty() && msg.back() == '.') msg.pop_back();
     throw InputError(msg.empty() ? "the plot script failed." : msg + ".");
