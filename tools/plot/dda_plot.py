@@ -31,6 +31,11 @@ reference).
 3D files (a fractures file from `dda dl`, a 3D blocks file from `dda dc`)
 are drawn in a 3D view; see dda_plot3d.py for --color, --explode, --view.
 
+A results file (dda-results, dda-results3d) is drawn by results_figures.py
+(-o FOLDER: every figure; -o FIG.png --kind blocks|sections|contacts|
+histories|energy|steps: one), with --times, --color-by, --component,
+--vectors, --look and --section; docs/plots.md.
+
 Needs numpy, h5py and matplotlib (Debian: python3-h5py, python3-matplotlib);
 runs headless (Agg). Any problem is one line on stderr and exit status 2.
 """
