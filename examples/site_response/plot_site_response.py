@@ -31,11 +31,11 @@ import numpy as np  # noqa: E402
 
 
 def readable_log_axis(axis):
-    """Ticks at 1, 2 and 5 per decade as plain numbers (0.5, 1, 2, 5 Hz):
+    """Ticks at 1, 2, 3 and 5 per decade as plain numbers (0.5, 1, 2, 3 Hz):
     matplotlib's default labels only the powers of ten, one tick here."""
     from matplotlib.ticker import FuncFormatter, LogLocator, NullFormatter
 
-    axis.set_major_locator(LogLocator(base=10, subs=(1.0, 2.0, 5.0)))
+    axis.set_major_locator(LogLocator(base=10, subs=(1.0, 2.0, 3.0, 5.0)))
     axis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:g}"))
     axis.set_minor_formatter(NullFormatter())
 

@@ -370,11 +370,11 @@ def read_csv_columns(path, what):
 
 
 def readable_log_axis(axis):
-    """Ticks at 1, 2 and 5 per decade, written as plain numbers: the default
+    """Ticks at 1, 2, 3 and 5 per decade, written as plain numbers: the default
     shows one label ("10⁰") on an axis shorter than a decade or two."""
     from matplotlib.ticker import FuncFormatter, LogLocator, NullFormatter
 
-    axis.set_major_locator(LogLocator(base=10, subs=(1.0, 2.0, 5.0)))
+    axis.set_major_locator(LogLocator(base=10, subs=(1.0, 2.0, 3.0, 5.0)))
     axis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:g}"))
     axis.set_minor_formatter(NullFormatter())
 
