@@ -56,8 +56,7 @@ Eigen::Vector3d intersection_line(const std::string& first, const std::string& s
 
 CompareDirection compare_direction(const CompareDirectionOptions& o, bool three_d) {
   const int given = !std::isnan(o.dip) + !o.direction.empty() + !o.trend_plunge.empty() + !o.intersection.empty();
-  const std::string choices = three_d ? "--direction x,y,z, --trend-plunge T/P or --intersection D/B D/B"
-                                      : "--dip D or --direction dx,dy";
+  const std::string choices = three_d ? "--direction, --trend-plunge or --intersection" : "--dip or --direction";
   if (given != 1) throw InputError(choices + ": give exactly one (the direction of the compared component).");
   CompareDirection d;
   if (!three_d) {
