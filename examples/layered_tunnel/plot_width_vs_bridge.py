@@ -33,14 +33,14 @@ def main():
     fig, ax = plt.subplots(figsize=(6, 4.5))
     for L in sorted(series):
         pts = sorted(series[L])
-        ax.plot([p[0] for p in pts], [p[1] for p in pts], "o-", label=f"L = {L} m")
+        ax.plot([p[0] for p in pts], [p[1] for p in pts], "o-", label=f"Shi-Goodman, joint length L = {L} m")
     layered = os.path.join(a.outdir, "layered", "stats.json")
     if os.path.exists(layered):
         with open(layered) as f:
             w = json.load(f)["width"]["mean"]
         ax.axhline(w, color="k", ls="--", label=f"layered (FSI 1.3): {w:.2f} m")
-    ax.set_xlabel("bridge / length")
-    ax.set_ylabel("mean block width [m]")
+    ax.set_xlabel("rock bridge / joint length (ratio)")
+    ax.set_ylabel("mean block width (m)")
     ax.set_title("Mean block width against bridge / length")
     ax.grid(alpha=0.3)
     ax.legend()

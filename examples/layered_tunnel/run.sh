@@ -3,7 +3,8 @@
 # (OUT=... another folder; scripts/check_examples.sh uses it).
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
-dda="${DDA:-$here/../../build/bin/dda}"
+source "$here/../find_dda.sh"
+dda="$(find_dda)"
 out="${OUT:-$here/out}"
 figs="$out/figures"
 rm -rf "$out"
@@ -16,7 +17,7 @@ echo "== mechanically layered mass (FMML)"
 echo "== Shi-Goodman meshes: L = 5, 10, 15 m; bridge = L/5 ... L"
 for L in 5 10 15; do
   files=("$out/layered/blocks.h5")
-  labels=("FMML")
+  labels=("layered (FMML)")
   for k in 1 2 3 4 5; do
     b=$(( L * k / 5 ))
     name="sg_L${L}_b${b}"
@@ -24,7 +25,7 @@ for L in 5 10 15; do
     "$dda" run "$out/$name.yaml" -o "$out/$name" --quiet
     echo "   $name: $(/usr/bin/python3 -c "import json,sys; s=json.load(open(sys.argv[1])); print(s['blocks'], 'blocks, mean width', round(s['width']['mean'],3), 'm')" "$out/$name/stats.json")"
     files+=("$out/$name/blocks.h5")
-    labels+=("bridge=$b")
+    labels+=("bridge $b m")
   done
   # Figure 5 of the seed report: block width and area distributions per L.
   "$dda" plot "${files[@]}" --kind histograms --labels "${labels[@]}" \

@@ -101,15 +101,24 @@ fig.tight_layout()
 os.makedirs(os.path.join(out, "figures"), exist_ok=True)
 fig.savefig(os.path.join(out, "figures", "figure18.png"), dpi=120)
 
-fig, ax = plt.subplots(figsize=(8, 4.5))
-for name, label, style in (("weakening", "velocity weakening", "C3"), ("loading", "constant phi = 30", "C0")):
-    ax.plot(cases[name]["t"], [1e3 * s for s in cases[name]["dda"]], style + "-", label="3D DDA, " + label)
-    ax.plot(cases[name]["t_ref"], [1e3 * s for s in cases[name]["ref"]], style + ":", label="analytical, " + label)
-ax.set_yscale("symlog", linthresh=1)
-ax.set_xlabel("time, s")
+# Run-out: the weakening wedge travels metres, the constant-friction one
+# millimetres. Two linear panels (all of it, then the constant-friction case
+# on its own scale) read directly, where one symlog axis did not.
+fig, (ax, zoom) = plt.subplots(2, 1, figsize=(8, 7), sharex=True)
+for name, label, style in (("weakening", "velocity weakening", "C3"), ("loading", "constant phi = 30 deg", "C0")):
+    for panel in (ax, zoom) if name == "loading" else (ax,):
+        panel.plot(cases[name]["t"], [1e3 * s for s in cases[name]["dda"]], style + "-", label="3D DDA, " + label)
+        panel.plot(cases[name]["t_ref"], [1e3 * s for s in cases[name]["ref"]], style + ":",
+                   label="analytical, " + label)
 ax.set_ylabel("displacement along the line, mm")
 ax.set_title("Run-out: mu = 0.577 - 0.05 ln(v / 1 mm/s), same 0.22 g input")
-ax.legend()
+ax.legend(fontsize=8)
+zoom.set_ylabel("displacement along the line, mm")
+zoom.set_title("constant phi = 30 deg on its own scale", fontsize=9)
+zoom.set_xlabel("time, s")
+zoom.legend(fontsize=8)
+for panel in (ax, zoom):
+    panel.grid(alpha=0.3)
 fig.tight_layout()
 fig.savefig(os.path.join(out, "figures", "runout.png"), dpi=120)
 

@@ -6,12 +6,12 @@
 # friction (run-out). Figures and a check (compare.py; exit status 1 if a
 # check fails). About two minutes on two cores (five runs of up to 12,000
 # steps).
-# Environment: DDA (the program; default build/bin/dda), OUT (output folder;
+# Environment: DDA (the program; default dda on PATH, else build/bin/dda), OUT (output folder;
 # default examples/shaking_table_wedge/out).
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
-root="$(cd "$here/../.." && pwd)"
-DDA="${DDA:-$root/build/bin/dda}"
+source "$here/../find_dda.sh"
+DDA="$(find_dda)"
 OUT="${OUT:-$here/out}"
 mkdir -p "$OUT/records"
 

@@ -30,6 +30,16 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 
+def readable_log_axis(axis):
+    """Ticks at 1, 2, 3 and 5 per decade as plain numbers (0.5, 1, 2, 3 Hz):
+    matplotlib's default labels only the powers of ten, one tick here."""
+    from matplotlib.ticker import FuncFormatter, LogLocator, NullFormatter
+
+    axis.set_major_locator(LogLocator(base=10, subs=(1.0, 2.0, 3.0, 5.0)))
+    axis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:g}"))
+    axis.set_minor_formatter(NullFormatter())
+
+
 def table(path):
     with open(path) as f:
         rows = list(csv.DictReader(f))
@@ -53,6 +63,7 @@ def main():
         axis.set_title(label, fontsize=9, loc="left")
         axis.grid(alpha=0.3)
     ax[-1].set_xlabel("time (s)")
+    fig.suptitle("Horizontal velocity: outcrop input and three receivers", fontsize=10)
     fig.tight_layout()
     fig.savefig(f"{a.outdir}/velocities.png", dpi=130)
 
@@ -66,7 +77,9 @@ def main():
     ax.axhline(1, color="0.5", lw=0.5)
     ax.set_xlabel("frequency (Hz)")
     ax.set_ylabel("spectral ratio (horizontal velocity)")
-    ax.set_title("Konno-Ohmachi smoothed (b = 40)")
+    ax.set_title("Site amplification: spectral ratios of the horizontal velocity, Konno-Ohmachi smoothed (b = 40)",
+                 fontsize=10)
+    readable_log_axis(ax.xaxis)
     ax.grid(alpha=0.3, which="both")
     ax.legend()
     fig.tight_layout()
@@ -77,7 +90,10 @@ def main():
     ax.loglog(hv_c["f"], hv_c["hv"], label="crest")
     ax.loglog(hv_b["f"], hv_b["hv"], label="plain")
     ax.set_xlabel("frequency (Hz)")
-    ax.set_ylabel("H/V")
+    ax.set_ylabel("H/V spectral ratio (horizontal / vertical velocity)")
+    ax.set_title("H/V ratio at the crest and on the plain", fontsize=10)
+    readable_log_axis(ax.xaxis)
+    readable_log_axis(ax.yaxis)
     ax.grid(alpha=0.3, which="both")
     ax.legend()
     fig.tight_layout()

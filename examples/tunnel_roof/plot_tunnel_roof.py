@@ -64,6 +64,7 @@ def main():
         frames_t = f["frames/time"][()]
         v1 = f["frames/vertices"][-1]
         complete = int(f.attrs["complete"])
+        stopped_at = float(f.attrs["time"])
 
     # Vertical displacement against time.
     fig, ax = plt.subplots(figsize=(7, 4.5))
@@ -71,7 +72,8 @@ def main():
         ax.plot(t, 1000 * u[:, k, 1], label=name)
     ax.set_xlabel("time (s)")
     ax.set_ylabel("vertical displacement (mm)")
-    ax.set_title("Measurement points above the roof (x = 30.1 m)")
+    ax.set_title("Vertical displacement of the measurement points above the roof (x = 30.1 m)"
+                 + ("" if complete else f"; run incomplete, stopped at t = {stopped_at:g} s"), fontsize=10)
     ax.grid(alpha=0.3)
     ax.legend(loc="center right")
     fig.tight_layout()
@@ -95,17 +97,27 @@ def main():
     loose, height = zone(args.threshold)
 
     fig, ax = plt.subplots(figsize=(10, 7))
-    pc = PolyCollection(polys1, array=1000 * dy, cmap="viridis_r", edgecolors="0.3", linewidths=0.2)
+    # Signed (settlement negative, heave positive): a diverging map centred on 0.
+    top = float(np.max(np.abs(1000 * dy))) or 1.0
+    pc = PolyCollection(polys1, array=1000 * dy, cmap="RdBu_r", edgecolors="0.3", linewidths=0.2)
+    pc.set_clim(-top, top)
     ax.add_collection(pc)
     ax.add_collection(PolyCollection([p for p, l in zip(polys1, loose) if l], facecolors="none",
-                                     edgecolors="red", linewidths=0.8))
-    fig.colorbar(pc, ax=ax, label="vertical displacement of the centroid (mm)")
-    ax.axhline(ROOF_Y + height, color="red", ls="--", lw=0.8)
+                                     edgecolors="#ff7f00", linewidths=1.0))  # not red: red is heave here
+    fig.colorbar(pc, ax=ax, label="vertical displacement of the centroid (mm, up positive)")
+    ax.axhline(ROOF_Y + height, color="#ff7f00", ls="--", lw=1.0)
     ax.set_xlim(10, 50)
     ax.set_ylim(0, 40)
     ax.set_aspect("equal")
-    ax.set_title(f"t = {frames_t[-1]:g} s; loosened (> {1000 * args.threshold:g} mm beyond the far field, red): "
-                 f"height {height:.2f} m = {height / B:.2f} B")
+    ax.set_xlabel("x (m)")
+    ax.set_ylabel("y (m)")
+    if complete:
+        when = f"t = {frames_t[-1]:g} s (end of the run)"
+    else:  # an interrupted run: the last frame saved may be far behind where it stopped
+        when = (f"t = {frames_t[-1]:g} s, the last frame saved of an incomplete run "
+                f"(stopped at t = {stopped_at:g} s)")
+    ax.set_title(f"Deformed blocks over the tunnel, {when}\nloosened (> {1000 * args.threshold:g} mm beyond the "
+                 f"far field, orange outline): height {height:.2f} m = {height / B:.2f} B", fontsize=10)
     fig.tight_layout()
     fig.savefig(f"{args.outdir}/deformed_mesh.png", dpi=150)
 

@@ -6,7 +6,8 @@
 # A run interrupted (Ctrl-C) continues with: dda df --resume out/results.h5
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
-dda="${DDA:-$here/../../build/bin/dda}"
+source "$here/../find_dda.sh"
+dda="$(find_dda)"
 out="${OUT:-$here/out}"
 rm -rf "$out"
 mkdir -p "$out/figures"
@@ -17,4 +18,5 @@ echo "dda run took $(( $(date +%s) - start )) s"
 "$dda" history "$out/results.h5" --steps -o "$out/steps.csv"
 "$dda" history "$out/results.h5" --csv > "$out/history.csv"
 MPLBACKEND=Agg /usr/bin/python3 "$here/plot_tunnel_roof.py" "$out/results.h5" -o "$out/figures" | tee "$out/loosened_zone.json"
+"$dda" plot "$out/results.h5" -o "$out/figures/results" -q
 echo "figures in $out/figures; ParaView: $out/vtk/df.pvd"

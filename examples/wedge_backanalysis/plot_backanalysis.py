@@ -131,8 +131,10 @@ def main():
     fig.savefig(os.path.join(a.output, "displacement.png"), dpi=120, bbox_inches="tight")
     plt.close(fig)
 
-    # ---- Figure 2: friction angle and mean sliding speed against cycles (cf. seed Fig. 20)
-    fig, ax = plt.subplots(figsize=(9, 5))
+    # ---- Figure 2: friction angle and mean sliding speed against cycles (cf. seed Fig. 20).
+    # The speed has its own panel below: on a twin log axis its markers were
+    # drawn over the friction-angle curves.
+    fig, (ax, ax2) = plt.subplots(2, 1, sharex=True, figsize=(9, 6.5), gridspec_kw={"height_ratios": [3, 2]})
     ax.plot(true[:, 0] * a.freq, true[:, 1], color="k", lw=2.0, label="true (friction_true.csv)")
     xs, ys = [], []
     for s in segs:
@@ -141,14 +143,13 @@ def main():
         ax.text(0.5 * (s["t0"] + s["t1"]) * a.freq, s["phi_deg"] + 0.25,
                 f"{s['phi_deg']:.3f}°", ha="center", fontsize=9, color="tab:red")
     ax.plot(xs, ys, color="tab:red", lw=1.5, ls="--", label="back-fitted (dda backfit)")
-    ax.set_xlabel(f"cycles of motion ({a.freq:g} Hz)")
     ax.set_ylabel("friction angle [°]")
     lo = min(true[:, 1].min(), min(s["phi_deg"] for s in segs))
     hi = max(true[:, 1].max(), max(s["phi_deg"] for s in segs))
     ax.set_ylim(lo - 1.5, hi + 1.5)
     ax.set_xlim(0, t_b[-1] * a.freq)
     ax.grid(alpha=0.3)
-    ax2 = ax.twinx()
+    ax.legend(loc="best", fontsize=8)
     # mean speed per cycle of the back-fitted model (path length / period)
     period = 1.0 / a.freq
     ncyc = int(round(t_b[-1] / period))
@@ -164,12 +165,13 @@ def main():
     for i, s in enumerate(segs):
         ax2.semilogy([s["t0"] * a.freq, s["t1"] * a.freq], [1000 * s["mean_speed"]] * 2, color="tab:blue",
                      ls=":", lw=1.5, label="mean sliding speed per segment" if i == 0 else None)
+    ax2.yaxis.set_major_locator(matplotlib.ticker.LogLocator(base=10, subs=(1.0, 2.0, 5.0)))
     ax2.yaxis.set_major_formatter(matplotlib.ticker.FuncFormatter(lambda y, _: f"{y:g}"))
-    ax2.set_ylabel("mean sliding speed [mm/s]", color="tab:blue")
-    ax2.tick_params(axis="y", colors="tab:blue")
-    h1, l1 = ax.get_legend_handles_labels()
-    h2, l2 = ax2.get_legend_handles_labels()
-    ax.legend(h1 + h2, l1 + l2, loc="upper center", bbox_to_anchor=(0.5, -0.13), ncol=2, fontsize=8)
+    ax2.yaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())
+    ax2.set_ylabel("mean sliding speed [mm/s]")
+    ax2.set_xlabel(f"cycles of motion ({a.freq:g} Hz)")
+    ax2.grid(alpha=0.3, which="both")
+    ax2.legend(loc="best", fontsize=8)
     ax.set_title("Friction per segment (same angle on both planes) and mean sliding speed", fontsize=10)
     fig.tight_layout()
     fig.savefig(os.path.join(a.output, "friction_segments.png"), dpi=120)

@@ -4,7 +4,8 @@
 # angle is off (check_backanalysis.py).
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
-dda="${DDA:-$here/../../build/bin/dda}"
+source "$here/../find_dda.sh"
+dda="$(find_dda)"
 py=/usr/bin/python3
 export MPLBACKEND=Agg
 out="${OUT:-$here/out}"   # OUT=... writes elsewhere (the ctest run does)

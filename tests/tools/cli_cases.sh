@@ -1003,5 +1003,205 @@ case_outputs_spare_inputs() {
   "$DDA" df --resume part.h5 -o part.h5 -q || fail "resume in place was refused"
 }
 
+# png_size FILE: "WIDTH HEIGHT" from the PNG header, or nothing if FILE is not a PNG.
+png_size() {
+  /usr/bin/python3 -c "
+import struct, sys
+d = open(sys.argv[1], 'rb').read(24)
+if d[:8] == b'\x89PNG\r\n\x1a\n': print(*struct.unpack('>II', d[16:24]))" "$1"
+}
+
+# every_png FOLDER NAME...: each FOLDER/NAME.png is a PNG of a sensible size.
+every_png() {
+  local dir="$1"; shift
+  for k in "$@"; do
+    local size; size="$(png_size "$dir/$k.png")"
+    [ -n "$size" ] || fail "$dir/$k.png is missing or not a PNG"
+    set -- $size
+    [ "$1" -ge 400 ] && [ "$2" -ge 300 ] || fail "$dir/$k.png is only $1 x $2 pixels"
+  done
+}
+
+case_plot_results_2d() {
+  write_incline
+  "$DDA" run incline.yaml -o out -q --no-report || fail "run"
+  "$DDA" plot out/results.h5 -o figs -q || fail "plot every figure"
+  every_png figs blocks contacts histories energy steps
+  [ "$(ls figs | wc -l)" -eq 5 ] || fail "figs holds $(ls figs)"
+  "$DDA" plot out/results.h5 -o s.png --times 0 0.5 --color-by stress --component sxy --vectors -q \
+    || fail "plot stress at two times"
+  every_png . s
+  # What is drawn is what the file holds: the colour scale of the deformed
+  # blocks ends at the largest block displacement of the last frame, and the
+  # history lines are the file's displacements.
+  PYTHONPATH="$SRC/tools/plot" /usr/bin/python3 - <<'PY' || fail "the figures do not show the file's numbers"
+import h5py, numpy as np
+import results_figures as rf
+from results_data import read_results
+r = read_results("out/results.h5", h5py)
+with h5py.File("out/results.h5") as f:
+    off, v0, v1 = f["model/blocks/offsets"][()], f["model/blocks/vertices"][()], f["frames/vertices"][-1]
+    u = f["series/displacement"][()]
+top = max(np.linalg.norm(v1[a:b].mean(0) - v0[a:b].mean(0)) for a, b in zip(off[:-1], off[1:]))
+fig, note = rf.draw(r, "blocks", rf.FigureOptions())
+pc = fig.axes[0].collections[0]
+label = fig.axes[1].get_ylabel()
+factor = 1000.0 if "(mm)" in label else 1.0
+assert "(m)" in label or "(mm)" in label, label
+assert abs(pc.get_clim()[1] - factor * top) <= 1e-9 * factor * top, (pc.get_clim(), top)
+fig, note = rf.draw(r, "histories", rf.FigureOptions())
+ux = fig.axes[0].lines[0].get_ydata()
+factor = 1000.0 if "(mm)" in fig.axes[0].get_ylabel() else 1.0
+assert np.allclose(ux, factor * u[:, 0, 0]), "ux of the first point"
+assert note is None
+PY
+  # A results file without contacts: said, and the blocks are drawn.
+  /usr/bin/python3 -c "
+import h5py, shutil
+shutil.copy('out/results.h5', 'nc.h5')
+with h5py.File('nc.h5', 'r+') as f: del f['checkpoint/contacts']" || fail "copy without contacts"
+  "$DDA" plot nc.h5 -o nc.png --kind contacts > note.txt 2>&1 || fail "plot contacts of a file without them"
+  grep -q "holds no contacts" note.txt || fail "no word about the missing contacts: $(cat note.txt)"
+  every_png . nc
+  expect_error 1 "out/results.h5: a 3D results file|out/results.h5: --kind sections is for 3D results" -- \
+    "$DDA" plot out/results.h5 -o x.png --kind sections
+  expect_error 1 "out/results.h5: --times 7 is outside the saved frames \(t = 0 to 1 s\)" -- \
+    "$DDA" plot out/results.h5 -o x.png --times 7
+  [ ! -e x.png ] || fail "a refused plot left x.png"
+}
+
+case_plot_results_3d() {
+  cp "$SRC/tests/data/df3_incline.yaml" . || fail "copy the fixture"
+  "$DDA" run df3_incline.yaml -o out -q || fail "run"
+  "$DDA" plot out/results.h5 -o figs -q || fail "plot every figure"
+  every_png figs blocks sections contacts histories steps
+  [ ! -e figs/energy.png ] || fail "a 3D run has no energy record to draw"
+  "$DDA" plot out/results.h5 -o v.png --look 225/30 plan --times 0 1 --vectors --color-by velocity -q \
+    || fail "plot views"
+  "$DDA" plot out/results.h5 -o s.svg --kind sections --section z=4 y=5 -q || fail "plot sections"
+  every_png . v
+  grep -q "<svg" s.svg || fail "s.svg is not an SVG"
+  # The views show the model's own extent: looking north, x spans the box (0..10 m) and z its height.
+  PYTHONPATH="$SRC/tools/plot" /usr/bin/python3 - <<'PY' || fail "the 3D view does not span the model"
+import h5py
+import results_figures as rf
+from results_data import read_results
+r = read_results("out/results.h5", h5py)
+fig, _ = rf.draw(r, "blocks", rf.FigureOptions(looks=["north"]))
+ax = fig.axes[0]
+assert ax.get_xlabel() == "x east (m)" and ax.get_ylabel() == "z up (m)", (ax.get_xlabel(), ax.get_ylabel())
+lo, hi = ax.get_xlim()
+assert lo <= 0 and hi >= 10 and hi - lo < 11, (lo, hi)
+PY
+  expect_error 1 "out/results.h5: a 3D results file keeps no energy record" -- \
+    "$DDA" plot out/results.h5 -o x.png --kind energy
+  expect_error 1 "dda: --look 30: give TREND/PLUNGE" -- "$DDA" plot out/results.h5 -o x.png --look 30
+}
+
+# dda compare on a 3D run against dda sliding3d: the df3_incline block slides
+# down a 20 deg plane (dip direction 090) with friction 10 deg, s = a t^2 / 2,
+# a = g (sin 20 - cos 20 tan 10). The run gives 0.86505 m at t = 1 s against
+# 0.86488 m: +0.019 %. The DDA step integrates a constant acceleration
+# exactly, so what is left is the contact's penalty spring settling under
+# the block's weight and the first steps' open-close iterations. The test
+# allows 0.01 % to 0.03 %: a direction 2 deg off (1 - cos 2 = 0.06 %), one step of
+# delay in the time axis (2 dt / t = 0.2 %) or a sign error all fall outside.
+case_compare_3d_sliding3d() {
+  cp "$SRC/tests/data/df3_incline.yaml" . || fail "copy the fixture"
+  "$DDA" run df3_incline.yaml -o out -q || fail "run"
+  "$DDA" sliding3d --plane 20/090 --phi 10 --duration 1 --dt 1e-4 -o ref.csv -q || fail "sliding3d"
+  "$DDA" compare out/results.h5 --point slider --trend-plunge 090/20 --reference ref.csv --json \
+    --plot cmp.png -o cmp.csv > tp.json || fail "compare along trend/plunge"
+  every_png . cmp
+  "$DDA" compare out/results.h5 --point slider --intersection 20/090 90/000 --reference ref.csv --json > ix.json \
+    || fail "compare along the line of two planes"
+  "$DDA" compare out/results.h5 --point slider --direction 0.9396926207859084,0,-0.3420201433256687 \
+    --reference ref.csv --json > v.json || fail "compare along a vector"
+  /usr/bin/python3 - <<'PY' || fail "3D comparison"
+import json, math
+tp, ix, v = (json.load(open(n)) for n in ("tp.json", "ix.json", "v.json"))
+d = tp["direction"]
+assert len(d) == 3 and abs(d[0] - math.cos(math.radians(20))) < 1e-12 and abs(d[2] + math.sin(math.radians(20))) < 1e-12, d
+for other in (ix, v):   # the same direction three ways: the same numbers
+    assert abs(other["final_relative_error"] - tp["final_relative_error"]) < 1e-9, (other, tp)
+assert tp["reference_direction"] == tp["direction"]
+assert abs(tp["final_time"] - 1.0) < 1e-12
+e = tp["final_relative_error"]
+print("final relative error %.4f %%" % (100 * e))
+assert 1e-4 <= e <= 3e-4, e
+PY
+  expect_error 1 "dda: --dip: is for 2D results" -- \
+    "$DDA" compare out/results.h5 --point slider --dip 20 --reference ref.csv
+  expect_error 1 "dda: --direction: give three numbers x,y,z for a 3D results file" -- \
+    "$DDA" compare out/results.h5 --point slider --direction 1,0 --reference ref.csv
+  expect_error 1 "dda: --intersection: the planes 20/090 and 20/090 are parallel" -- \
+    "$DDA" compare out/results.h5 --point slider --intersection 20/090 20/090 --reference ref.csv
+}
+
+# dda run writes report.html after a forward run: every section, table and
+# figure is there, and every figure is a PNG inside the page.
+check_report() {
+  /usr/bin/python3 - "$1" "$2" <<'PY' || fail "report $1"
+import base64, sys
+from html.parser import HTMLParser
+path, dim = sys.argv[1], int(sys.argv[2])
+class Page(HTMLParser):
+    def __init__(self):
+        super().__init__()
+        self.ids, self.images, self.external = set(), [], []
+    def handle_starttag(self, tag, attrs):
+        a = dict(attrs)
+        if "id" in a:
+            assert a["id"] not in self.ids, "id %s twice" % a["id"]
+            self.ids.add(a["id"])
+        if tag == "img":
+            self.images.append(a.get("src", ""))
+        for k in ("href", "src"):   # self-contained: nothing fetched from elsewhere
+            if k in a and not a[k].startswith(("data:", "#")):
+                self.external.append(a[k])
+p = Page()
+p.feed(open(path, encoding="utf-8").read())
+kinds = ["blocks", "contacts", "histories", "steps"] + (["energy"] if dim == 2 else ["sections"])
+want = {"figure-" + k for k in kinds} | {"table-" + t for t in ("provenance", "model", "run", "points")}
+want |= {"provenance", "model", "run", "energy-balance", "warnings", "figures", "measurement-points", "scenario"}
+if dim == 2:
+    want.add("table-energy")
+missing = want - p.ids
+assert not missing, "missing: %s" % sorted(missing)
+assert not p.external, p.external
+assert len(p.images) == len(kinds), len(p.images)
+for src in p.images:
+    assert src.startswith("data:image/png;base64,"), src[:40]
+    assert base64.b64decode(src.split(",", 1)[1])[:8] == b"\x89PNG\r\n\x1a\n"
+PY
+}
+
+case_report_html() {
+  write_incline
+  sed -i 's/plots: false/plots: true/' incline.yaml
+  "$DDA" run incline.yaml -o out --no-vtk > run.log || fail "run"
+  grep -q "report written to out/report.html" run.log || fail "dda run did not say where the report is"
+  check_report out/report.html 2
+  cp "$SRC/tests/data/df3_incline.yaml" . || fail "copy the fixture"
+  "$DDA" run df3_incline.yaml -o out3 -q || fail "run 3D"
+  [ ! -e out3/report.html ] || fail "a run with plots: false wrote a report"
+  "$DDA" report out3 -o rep3 -q || fail "dda report on a 3D run folder"
+  check_report rep3/report.html 3
+  grep -q "keeps no energy record" rep3/report.html || fail "the 3D report does not say why there is no energy"
+  expect_error 1 "out/blocks.h5: is not a results file \(dda-blocks\)" -- "$DDA" report out/blocks.h5 -o x
+  mkdir empty
+  expect_error 1 "empty: holds no results.h5" -- "$DDA" report empty -o x
+  # A headless browser renders the page when one is installed.
+  for b in chromium chromium-browser google-chrome; do
+    if command -v "$b" > /dev/null; then
+      "$b" --headless --disable-gpu --no-sandbox --screenshot="$PWD/shot.png" --window-size=1200,3000 \
+        "file://$PWD/out/report.html" > /dev/null 2>&1 || fail "$b could not render the report"
+      every_png . shot
+      break
+    fi
+  done
+  true
+}
+
 "case_$CASE"
 echo "PASS [$CASE]"

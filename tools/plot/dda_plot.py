@@ -31,32 +31,28 @@ reference).
 3D files (a fractures file from `dda dl`, a 3D blocks file from `dda dc`)
 are drawn in a 3D view; see dda_plot3d.py for --color, --explode, --view.
 
+A results file (dda-results, dda-results3d) is drawn by results_figures.py
+(-o FOLDER: every figure; -o FIG.png --kind blocks|sections|contacts|
+histories|energy|steps: one), with --times, --color-by, --component,
+--vectors, --look and --section; docs/plots.md.
+
 Needs numpy, h5py and matplotlib (Debian: python3-h5py, python3-matplotlib);
 runs headless (Agg). Any problem is one line on stderr and exit status 2.
 """
 
 import argparse
-import errno
 import math
 import os
 import sys
 
-PROG = "dda_plot.py"
+from plot_io import PROG, fail, save_atomically
+
 POINT_STYLE = {  # kind code -> (marker, colour, label); codes as in docs/formats.md
     0: ("^", "black", "fixed point"),
     1: ("v", "#d62728", "load point"),
     2: ("o", "#1f77b4", "measurement point"),
     3: ("x", "#555555", "hole point"),
 }
-
-
-def fail(message):
-    """One sentence on stderr, exit status 2."""
-    message = message.rstrip()
-    if not message.endswith("."):
-        message += "."
-    print(f"{PROG}: {message}", file=sys.stderr)
-    sys.exit(2)
 
 
 try:
@@ -71,6 +67,9 @@ try:
     from matplotlib.patches import Polygon as PolygonPatch
 except ImportError as exc:  # pragma: no cover - depends on the machine
     fail(f"needs numpy, h5py and matplotlib ({exc}); run it with /usr/bin/python3")
+
+from results_data import RESULTS_FORMATS  # noqa: E402 (needs numpy)
+from results_quantities import STRESS_2D, STRESS_CHOICES  # noqa: E402
 
 
 # ----------------------------------------------------------------- reading
@@ -237,7 +236,7 @@ def draw_blocks(ax, m, names=True):
     return handles, bounds
 
 
-def finish_map(ax, bounds, title, handles):
+def finish_map(ax, bounds, title, handles, axis_labels=("x (m)", "y (m)")):
     ax.set_aspect("equal")
     if bounds:
         allp = np.vstack(bounds)
@@ -245,14 +244,15 @@ def finish_map(ax, bounds, title, handles):
         pad = 0.03 * max(hi[0] - lo[0], hi[1] - lo[1], 1e-9)
         ax.set_xlim(lo[0] - pad, hi[0] + pad)
         ax.set_ylim(lo[1] - pad, hi[1] + pad)
-    ax.set_xlabel("x (m)")
-    ax.set_ylabel("y (m)")
+    ax.set_xlabel(axis_labels[0])
+    ax.set_ylabel(axis_labels[1])
     ax.set_title(title, fontsize=10)
     if handles:
         ax.legend(handles=handles, fontsize=7, loc="upper right", framealpha=0.85)
 
 
-def plot_maps(models, labels, kind, names):
+def plot_maps(models, labels, kind, names, axis_labels):
+    """Each file in its panel; the panel says what it holds (or --labels)."""
     n = len(models)
     cols = min(n, 3)
     rows = (n + cols - 1) // cols
@@ -263,11 +263,12 @@ def plot_maps(models, labels, kind, names):
             fail(f"{m.path}: is a {m.format} file, --kind {kind} needs a {want} file")
         if m.format == "dda-lines":
             handles, bounds = draw_lines(ax, m, names)
-            sub = f"{len(m.endpoints)} lines"
+            sets = len(set(int(x) for x in m.line_set))
+            sub = f"{len(m.endpoints)} joint traces in {sets} set{'s' if sets != 1 else ''}"
         else:
             handles, bounds = draw_blocks(ax, m, names)
             sub = f"{m.num_blocks} blocks"
-        finish_map(ax, bounds, f"{label} ({sub})", handles)
+        finish_map(ax, bounds, f"{label} ({sub})" if label else sub, handles, axis_labels)
     for ax in list(axes.flat)[n:]:
         ax.set_visible(False)
     return fig
@@ -368,7 +369,17 @@ def read_csv_columns(path, what):
         fail(f"{path}: cannot read it as a {what} CSV: {exc}")
 
 
-def plot_spectra(path, labels):
+def readable_log_axis(axis):
+    """Ticks at 1, 2, 3 and 5 per decade, written as plain numbers: the default
+    shows one label ("10⁰") on an axis shorter than a decade or two."""
+    from matplotlib.ticker import FuncFormatter, LogLocator, NullFormatter
+
+    axis.set_major_locator(LogLocator(base=10, subs=(1.0, 2.0, 3.0, 5.0)))
+    axis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:g}"))
+    axis.set_minor_formatter(NullFormatter())
+
+
+def plot_spectra(path, labels, amplitude_unit=None):
     """`dda spectra` output: f, amplitude[, reference, ratio] or f, horizontal,
     vertical, hv (log-log, the ratio in its own panel), or T, SD, SV, PSV,
     PSA, SA (response spectra against the period)."""
@@ -386,6 +397,7 @@ def plot_spectra(path, labels):
         bottom.set_ylabel("SD")
         bottom.set_xlabel("period T (s)")
         bottom.set_xscale("log")
+        readable_log_axis(bottom.xaxis)
         for ax in (top, bottom):
             ax.grid(True, which="both", alpha=0.3)
         top.legend(loc="best")
@@ -404,7 +416,8 @@ def plot_spectra(path, labels):
                                           gridspec_kw={"height_ratios": [1, 1]})
     for k, name, colour in zip(curves, names, ["#d62728", "black"]):
         top.loglog(f, c[k], color=colour, lw=1.2, label=name)
-    top.set_ylabel("Fourier amplitude")
+    top.set_ylabel(f"Fourier amplitude ({amplitude_unit})" if amplitude_unit else "Fourier amplitude")
+    readable_log_axis(top.yaxis)
     top.grid(True, which="both", alpha=0.3)
     top.legend(loc="best")
     last = top
@@ -417,10 +430,12 @@ def plot_spectra(path, labels):
             i = int(np.nanargmax(np.where(ok, r, np.nan)))
             bottom.plot([f[i]], [r[i]], "o", color="#d62728")
             bottom.set_title(f"peak {r[i]:.3g} at {f[i]:.3g} Hz", fontsize=9, loc="right")
-        bottom.set_ylabel("H/V" if ratio_key == "hv" else "spectral ratio")
+        bottom.set_ylabel("H/V (ratio)" if ratio_key == "hv" else "spectral ratio")
+        readable_log_axis(bottom.yaxis)
         bottom.grid(True, which="both", alpha=0.3)
         last = bottom
     last.set_xlabel("frequency (Hz)")
+    readable_log_axis(last.xaxis)
     fig.tight_layout()
     return fig
 
@@ -451,6 +466,8 @@ def plot_3d(paths, formats, labels, a):
     cols = min(n, 2)
     rows = (n + cols - 1) // cols
     fig = plt.figure(figsize=(7.5 * cols, 6.0 * rows))
+    # Room on the left: the z label of a 3D axes lies outside its box.
+    fig.subplots_adjust(left=0.08, right=0.95)
     for k, (path, fm, label) in enumerate(zip(paths, formats, labels)):
         ax = fig.add_subplot(rows, cols, k + 1, projection="3d")
         try:
@@ -463,6 +480,8 @@ def plot_3d(paths, formats, labels, a):
                 m = p3.read_fractures(f, arr) if fm == "dda-fractures" else p3.read_blocks3d(f, arr)
         except (OSError, KeyError, ValueError, TypeError) as exc:
             fail(f"{path}: cannot read it as a {fm} file ({exc})")
+        if label is None:
+            label = p3.describe(m, fm, set_names)
         if fm == "dda-fractures":
             p3.draw_fractures(ax, m, set_names, set_colours(len(set_names)), a.view, label)
         else:
@@ -473,35 +492,64 @@ def plot_3d(paths, formats, labels, a):
 # -------------------------------------------------------------------- main
 
 
-def sync_folder(folder):
-    fd = os.open(folder, os.O_RDONLY | os.O_DIRECTORY)
-    try:
-        os.fsync(fd)
-    except OSError as exc:
-        if exc.errno != errno.EINVAL:  # a filesystem that cannot sync folders
-            raise
-    finally:
-        os.close(fd)
+# ----------------------------------------------------------------- results
+RESULTS_ONLY_KINDS = ("sections", "contacts", "histories", "energy", "steps", "all")
+FIGURE_EXTENSIONS = (".png", ".svg", ".pdf")
 
 
-def save_atomically(fig, out):
-    folder, base = os.path.split(os.path.abspath(out))
-    ext = os.path.splitext(base)[1].lower()
-    tmp = os.path.join(folder, f".{base}.tmp-{os.getpid()}{ext}")
+def plot_results(a):
+    """A results file: one figure (-o FIG.png) or, when -o is a folder, every
+    figure that applies (--kind all, the default there) as KIND.png."""
+    import results_figures as rf
+    from results_data import ResultsError, read_results
+
     try:
-        fig.savefig(tmp, format=ext[1:], dpi=150, bbox_inches="tight")
-        # On the disk before the rename, and the rename itself after it, as
-        # the C++ writer does (common/src/atomic_file.cpp): a crash must not
-        # leave the figure's name on an empty file.
-        with open(tmp, "rb") as f:
-            os.fsync(f.fileno())
-        os.replace(tmp, out)
-        sync_folder(folder)
-    except OSError as exc:
-        fail(f"{out}: cannot write: {exc.strerror or exc}")
-    finally:
-        if os.path.exists(tmp):
-            os.remove(tmp)
+        r = read_results(a.files[0], h5py)
+    except ResultsError as exc:
+        fail(str(exc))
+    ext = os.path.splitext(a.output)[1].lower()
+    to_folder = os.path.isdir(a.output) or ext == ""
+    if not to_folder and ext not in FIGURE_EXTENSIONS:
+        fail(f"{a.output}: give a figure ending in .png, .svg or .pdf, or a folder for all the figures")
+    if r.dim == 2 and a.component not in ("mean",) + STRESS_2D:
+        fail(f"--component {a.component}: a 2D results file has the stresses mean, {', '.join(STRESS_2D)}")
+    if to_folder:
+        parent = os.path.dirname(os.path.abspath(a.output))
+        if not os.path.isdir(parent):
+            fail(f"{a.output}: cannot write: the folder {parent} does not exist")
+        if os.path.exists(a.output) and not os.path.isdir(a.output):
+            fail(f"{a.output}: is a file; give a folder, or a figure ending in .png, .svg or .pdf")
+        os.makedirs(a.output, exist_ok=True)
+        kinds = rf.kinds_of(r) if a.kind in ("auto", "all") else (a.kind,)
+    else:
+        if a.kind == "all":
+            fail(f"--kind all writes several figures: give -o a folder, not {a.output}")
+        folder = os.path.dirname(os.path.abspath(a.output))
+        if not os.path.isdir(folder):
+            fail(f"{a.output}: cannot write: the folder {folder} does not exist")
+        kinds = ("blocks" if a.kind == "auto" else a.kind,)
+    for kind in kinds:
+        problem = rf.check_kind(r, kind)
+        if problem:
+            fail(problem)
+    problem = rf.check_times(r, a.times or [])
+    if problem:
+        fail(problem)
+    opts = rf.FigureOptions(a.times, a.color_by, a.component, a.vectors, a.look, a.section)
+    try:
+        rf.parse_choices(r, opts)
+    except ValueError as exc:
+        fail(str(exc))
+    for kind in kinds:
+        fig, note = rf.draw(r, kind, opts)
+        if a.title:
+            fig.suptitle(a.title)
+        out = os.path.join(a.output, f"{kind}.png") if to_folder else a.output
+        save_atomically(fig, out)
+        rf.close(fig)
+        if note:
+            print(f"note: {note}.")
+    return 0
 
 
 class Parser(argparse.ArgumentParser):
@@ -515,7 +563,8 @@ def main(argv=None):
     p.add_argument("files", nargs="+", metavar="FILE.h5",
                    help="dda-lines or dda-blocks files (--kind compare/spectra: one dda compare/spectra CSV)")
     p.add_argument("-o", "--output", required=True, metavar="OUT", help="OUT.png, OUT.svg or OUT.pdf")
-    p.add_argument("--kind", choices=["auto", "lines", "blocks", "histograms", "compare", "spectra"],
+    p.add_argument("--kind", choices=["auto", "lines", "blocks", "histograms", "compare", "spectra", "sections",
+                                      "contacts", "histories", "energy", "steps", "all"],
                    default="auto")
     p.add_argument("--labels", nargs="+", metavar="LABEL", help="one label per file")
     p.add_argument("--title", help="figure title")
@@ -523,14 +572,36 @@ def main(argv=None):
     p.add_argument("--fraction", action="store_true",
                    help="histograms: fraction of each file's blocks instead of counts")
     p.add_argument("--no-names", action="store_true", help="do not write point names")
+    p.add_argument("--amplitude-unit", metavar="UNIT", help="spectra: the unit of the Fourier amplitude")
+    p.add_argument("--axes", nargs=2, metavar=("XLABEL", "YLABEL"),
+                   help="2D maps: axis labels (default 'x (m)' 'y (m)'), e.g. a section's own axes")
     p.add_argument("--color", choices=["removability", "body", "layer"], default="removability",
                    help="3D blocks: colour bodies by block-theory mode (default), at random, or by bed")
     p.add_argument("--explode", type=float, default=0.0, metavar="F",
                    help="3D blocks: move bodies apart by F times their offset from the centre")
     p.add_argument("--view", type=float, nargs=2, default=[25.0, -60.0], metavar=("ELEV", "AZIM"),
                    help="3D: camera elevation and azimuth, degrees (default 25 -60)")
+    r = p.add_argument_group("results files (dda-results, dda-results3d)")
+    r.add_argument("--times", type=float, nargs="+", metavar="T",
+                   help="blocks: draw the frames nearest these times, s (default: the last)")
+    r.add_argument("--color-by", choices=["displacement", "velocity", "stress"], default="displacement",
+                   help="blocks, sections: colour blocks by |u|, |v| or a stress component")
+    r.add_argument("--component", choices=list(STRESS_CHOICES), default="mean",
+                   help="--color-by stress: the component (default mean normal stress)")
+    r.add_argument("--vectors", action="store_true", help="blocks: draw displacement vectors")
+    r.add_argument("--look", nargs="+", metavar="DIR",
+                   help="3D: lines of sight, TREND/PLUNGE or north, south, east, west, plan "
+                        "(default north west plan)")
+    r.add_argument("--section", nargs="+", metavar="AXIS=VALUE",
+                   help="3D sections: planes x=..., y=... or z=... (m; default: through the middle)")
     a = p.parse_args(argv)
 
+    if a.kind not in ("compare", "spectra") and any(file_format(f) in RESULTS_FORMATS for f in a.files):
+        if len(a.files) != 1:
+            fail(f"a results file is drawn on its own; got {len(a.files)} files")
+        return plot_results(a)
+    if a.kind in RESULTS_ONLY_KINDS:
+        fail(f"--kind {a.kind} draws a results file (dda-results or dda-results3d)")
     ext = os.path.splitext(a.output)[1].lower()
     if ext not in (".png", ".svg", ".pdf"):
         fail(f"{a.output}: the output must end in .png, .svg or .pdf")
@@ -548,7 +619,7 @@ def main(argv=None):
     if a.kind == "spectra":  # one CSV; --labels names the spectra
         if len(a.files) != 1:
             fail(f"--kind spectra draws one dda spectra CSV, got {len(a.files)} files")
-        fig = plot_spectra(a.files[0], a.labels or [])
+        fig = plot_spectra(a.files[0], a.labels or [], a.amplitude_unit)
         if a.title:
             fig.suptitle(a.title)
         save_atomically(fig, a.output)
@@ -557,7 +628,9 @@ def main(argv=None):
         fail(f"--labels gives {len(a.labels)} labels for {len(a.files)} files")
     if a.bins < 1:
         fail(f"--bins must be at least 1, got {a.bins}")
-    labels = a.labels or [os.path.basename(f) for f in a.files]
+    # Without --labels a histogram legend names the files (it compares them);
+    # a map's title says what it shows instead.
+    labels = a.labels or (["blocks"] if len(a.files) == 1 else [os.path.basename(f) for f in a.files])
 
     formats = [file_format(f) for f in a.files]
     if any(fm in THREE_D for fm in formats):
@@ -565,7 +638,7 @@ def main(argv=None):
             fail("3D files (fractures, 3D blocks) cannot be drawn together with 2D lines or blocks files")
         if a.kind not in ("auto", "blocks"):
             fail(f"--kind {a.kind} is for 2D files; 3D files are drawn with --kind auto")
-        fig = plot_3d(a.files, formats, labels, a)
+        fig = plot_3d(a.files, formats, a.labels or [None] * len(a.files), a)
         if a.title:
             fig.suptitle(a.title)
         save_atomically(fig, a.output)
@@ -574,7 +647,8 @@ def main(argv=None):
     if a.kind == "histograms":
         fig = plot_histograms(models, labels, a.bins, a.fraction)
     else:
-        fig = plot_maps(models, labels, a.kind, not a.no_names)
+        fig = plot_maps(models, a.labels or [None] * len(models), a.kind, not a.no_names,
+                        a.axes or ("x (m)", "y (m)"))
     if a.title:
         fig.suptitle(a.title)
     save_atomically(fig, a.output)

@@ -1,7 +1,8 @@
 """3D pictures for dda_plot.py: fractures files and 3D blocks files
 (docs/formats.md, "3D HDF5 files"), drawn as shaded polygons in a 3D view.
 
-A blocks file is drawn by rock body, coloured by its block-theory mode
+The panel's title says what is drawn (blocks and bodies, or fractures by
+set); --labels replaces it. A blocks file is drawn by rock body, coloured by its block-theory mode
 (--color removability, the default: grey not exposed, tan tapered, khaki
 removable but held by gravity, red falls, orange slides on one face, purple
 slides on two faces), by body (random colours) or by bed (--color layer).
@@ -61,6 +62,16 @@ def read_fractures(f, arr):
     return m
 
 
+def describe(m, fmt, set_names):
+    """A panel title that says what is drawn, not which file it came from."""
+    if fmt == "dda-fractures":
+        n = len(m["shape"])
+        return f"{n} fractures in {len(set_names)} set{'s' if len(set_names) != 1 else ''}"
+    nb = len(m["voff"]) - 1
+    bodies = len(set(int(b) for b in m["body"] if b >= 0))
+    return f"{nb} blocks in {bodies} rock bod{'ies' if bodies != 1 else 'y'}"
+
+
 def plane_basis(n):
     any_axis = np.array([1.0, 0, 0]) if abs(n[0]) < 0.9 else np.array([0, 1.0, 0])
     e1 = np.cross(n, any_axis)
@@ -103,11 +114,14 @@ def finish_axes(ax, pts, view, title):
     ax.set_xlim(lo[0], hi[0])
     ax.set_ylim(lo[1], hi[1])
     ax.set_zlim(lo[2], hi[2])
-    ax.set_box_aspect(tuple(np.maximum(hi - lo, 1e-9)))
+    # Zoomed out a little: at full size the axis labels fall outside the
+    # picture for many camera angles (the z label first).
+    ax.set_box_aspect(tuple(np.maximum(hi - lo, 1e-9)), zoom=0.8)
     ax.view_init(elev=view[0], azim=view[1])
     ax.set_xlabel("x east (m)")
     ax.set_ylabel("y north (m)")
-    ax.set_zlabel("z up (m)")
+    ax.zaxis.set_rotate_label(False)  # upright: matplotlib turns it upside down for some camera angles
+    ax.set_zlabel("z up\n(m)", labelpad=6)
     ax.set_title(title, fontsize=10)
 
 

@@ -4,7 +4,7 @@
 // stats.json, vtk/{lines.vtu, blocks.vtu, model.pvd} and
 // figures/{lines, blocks, histograms}.png; a scenario with a `control`
 // section is then run forward (DF) into results.h5 and
-// vtk/{df.pvd, df_blocks_*.vtu, df_contacts_*.vtu}. The whole scenario is
+// vtk/{df.pvd, df_blocks_*.vtu, df_contacts_*.vtu}, and report.html. The whole scenario is
 // checked before the first stage runs, so a typo in a late section fails at
 // once. A scenario with dimension: 3 runs the 3D pipeline (run3d.cpp).
 #include <filesystem>
@@ -31,9 +31,11 @@ namespace fs = std::filesystem;
 OutputOptions parse_output_options(const YamlNode& root) {
   OutputOptions o;
   if (auto out = root.optional_child("output")) {
-    out->allow({"vtk", "plots", "histogram_bins", "checkpoint_seconds", "checkpoint_steps", "vtk_contacts"});
+    out->allow(
+        {"vtk", "plots", "report", "histogram_bins", "checkpoint_seconds", "checkpoint_steps", "vtk_contacts"});
     o.vtk = out->flag("vtk", true);
     o.plots = out->flag("plots", true);
+    o.report = out->flag("report", true);
     o.histogram_bins = static_cast<int>(out->integer("histogram_bins", 20, Range::closed(1, 10000)));
     o.checkpoint_seconds = out->number("checkpoint_seconds", 60, Range::non_negative());
     o.checkpoint_steps = static_cast<int>(out->integer("checkpoint_steps", 0, Range::closed(0, 1e9)));
@@ -51,7 +53,7 @@ void guard_run_outputs(const std::string& scenario, const std::string& outdir) {
   const fs::path dir(outdir);
   std::vector<std::string> files{outdir};
   for (const char* name : {"lines.h5", "fractures.h5", "blocks.h5", "blocks3d.h5", "results.h5", "dl_report.json",
-                           "dc_report.json", "stats.json"})
+                           "dc_report.json", "stats.json", "report.html"})
     files.push_back((dir / name).string());
   std::vector<std::string> folders;
   for (const char* name : {"vtk", "figures", "sections"}) folders.push_back((dir / name).string());
@@ -63,7 +65,7 @@ void guard_run_outputs(const std::string& scenario, const std::string& outdir) {
 void add_run_command(CLI::App& app, const GlobalOptions& global) {
   struct Options {
     std::string scenario, outdir;
-    bool no_plots = false, no_vtk = false;
+    bool no_plots = false, no_vtk = false, no_report = false;
     SliverOverrides slivers;
   };
   auto opt = std::make_shared<Options>();
@@ -73,6 +75,7 @@ void add_run_command(CLI::App& app, const GlobalOptions& global) {
   cmd->add_option("-o,--output", opt->outdir, "Output folder (created if missing)")->required();
   cmd->add_flag("--no-plots", opt->no_plots, "Do not draw the figures");
   cmd->add_flag("--no-vtk", opt->no_vtk, "Do not write ParaView files");
+  cmd->add_flag("--no-report", opt->no_report, "Do not write report.html after a forward run");
   add_sliver_options(cmd, opt->slivers);
   cmd->callback([opt, &global] {
     guard_run_outputs(opt->scenario, opt->outdir);
@@ -87,6 +90,7 @@ void add_run_command(CLI::App& app, const GlobalOptions& global) {
       df3::check_df3_scenario(root);
       if (opt->no_plots) out.plots = false;
       if (opt->no_vtk) out.vtk = false;
+      if (opt->no_report) out.report = false;
       make_dir(fs::path(opt->outdir));
       run_pipeline_3d(root, fs::path(opt->outdir), out, global.quiet);
       return;
@@ -96,6 +100,7 @@ void add_run_command(CLI::App& app, const GlobalOptions& global) {
     df::check_df_scenario(root);
     if (opt->no_plots) out.plots = false;
     if (opt->no_vtk) out.vtk = false;
+    if (opt->no_report) out.report = false;
 
     const fs::path dir(opt->outdir);
     make_dir(dir);
@@ -141,6 +146,7 @@ void add_run_command(CLI::App& app, const GlobalOptions& global) {
       if (out.vtk) stage.vtk_dir = (dir / "vtk").string();
       stage.quiet = global.quiet;
       run_df_scenario(root, cut.model, blocks_h5, stage);
+      report_after_run(stage.results_path, dir, out, global.quiet);
     }
   });
 }

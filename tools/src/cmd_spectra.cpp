@@ -398,7 +398,13 @@ void add_spectra_command(CLI::App& app, const GlobalOptions& global) {
 
     if (!opt->output.empty()) write_text_atomically(opt->output, out.csv);
     if (!opt->plot.empty()) {
+      // The amplitude's unit: the signal's, times s for a Fourier amplitude.
+      const std::string& unit = sig.front().units;
+      std::string amplitude_unit = unit;
+      if (so.scale == analysis::AmplitudeScale::fourier)
+        amplitude_unit = unit == "m/s" ? "m" : unit == "m/s^2" ? "m/s" : unit.empty() ? "" : unit + "·s";
       std::vector<std::string> args{"-o", opt->plot, "--kind", "spectra", "--labels"};
+      if (!amplitude_unit.empty()) args.insert(args.begin(), {"--amplitude-unit", amplitude_unit});
       args.insert(args.end(), out.labels.begin(), out.labels.end());
       plot_csv(out.csv, opt->output, args);
     }

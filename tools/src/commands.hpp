@@ -33,11 +33,20 @@ void add_backfit_command(CLI::App& app, const GlobalOptions& global);
 void add_record_command(CLI::App& app, const GlobalOptions& global);
 void add_compare_command(CLI::App& app, const GlobalOptions& global);  // DDA history vs analytical
 void add_spectra_command(CLI::App& app, const GlobalOptions& global);  // Fourier, H/V, spectral ratios, response
+void add_report_command(CLI::App& app, const GlobalOptions& global);  // one HTML page of a run
+// Writes FOLDER/report.html for the results file (dda report, and dda run at its end).
+void write_run_report(const std::string& results, const std::string& folder, bool quiet);
+struct OutputOptions;
+// `dda run`'s last stage: report.html in `dir` for `results` when the
+// output options ask for it, or a note why not.
+void report_after_run(const std::string& results, const std::filesystem::path& dir, const OutputOptions& out,
+                      bool quiet);
 
 // The scenario's `output` section (parsed in cmd_run.cpp; docs/scenario.md).
 struct OutputOptions {
   bool vtk = true;
   bool plots = true;
+  bool report = true;              // DF: report.html at the end (needs plots too: it is made of the figures)
   int histogram_bins = 20;
   double checkpoint_seconds = 60;  // DF: rewrite results.h5 at least this often (wall clock), 0: at the end only
   int checkpoint_steps = 0;        // DF: and every this many steps, 0: off

@@ -20,7 +20,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string find_script() {
+std::string find_plot_script() {
   if (const char* env = std::getenv("DDA_PLOT_SCRIPT")) return env;
   // Installed layout: PREFIX/bin/dda and PREFIX/share/dda/dda_plot.py.
   std::error_code ec;
@@ -33,6 +33,14 @@ std::string find_script() {
   if (fs::exists(DDA_PLOT_SCRIPT)) return DDA_PLOT_SCRIPT;
 #endif
   throw InputError("cannot find the plot script dda_plot.py (set DDA_PLOT_SCRIPT to its path).");
+}
+
+// The other scripts (dda_report.py) live next to dda_plot.py.
+std::string find_script(const std::string& name) {
+  if (name == "dda_plot.py") return find_plot_script();
+  const fs::path path = fs::path(find_plot_script()).parent_path() / name;
+  if (!fs::exists(path)) throw InputError("cannot find the script " + path.string() + ".");
+  return path.string();
 }
 
 std::string find_python() {
@@ -79,15 +87,21 @@ std::string last_line(const std::string& text) {
 
 }  // namespace
 
-void run_plot_script(const std::vector<std::string>& args) {
-  std::vector<std::string> argv{find_python(), find_script()};
+void run_plot_script(const std::vector<std::string>& args) { run_script("dda_plot.py", args); }
+
+void run_report_script(const std::vector<std::string>& args) { run_script("dda_report.py", args); }
+
+void run_script(const std::string& script, const std::vector<std::string>& args) {
+  std::vector<std::string> argv{find_python(), find_script(script)};
   argv.insert(argv.end(), args.begin(), args.end());
   std::string err;
   const int status = spawn_and_wait(argv, err);
   if (status == 127) throw InputError("cannot run " + argv[0] + " to draw the figures (is python3 installed?).");
   if (status != 0) {
     std::string msg = last_line(err);
-    if (msg.rfind("dda_plot: ", 0) == 0) msg = msg.substr(10);
+    // The scripts start their one-line messages with their name.
+    for (const std::string& prefix : {script + ": ", std::string("dda_plot: ")})
+      if (msg.rfind(prefix, 0) == 0) msg = msg.substr(prefix.size());
     while (!msg.empty() && msg.back() == '.') msg.pop_back();
     throw InputError(msg.empty() ? "the plot script failed." : msg + ".");
   }

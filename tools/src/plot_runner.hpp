@@ -11,6 +11,10 @@ namespace dda::cli {
 // Runs the plot script with `args`; InputError with the script's own one-line
 // message if it fails.
 void run_plot_script(const std::vector<std::string>& args);
+// Runs the report script (tools/plot/dda_report.py) with `args`, the same way.
+void run_report_script(const std::vector<std::string>& args);
+// Runs `script` (a file next to dda_plot.py) with `args`.
+void run_script(const std::string& script, const std::vector<std::string>& args);
 
 // Runs the plot script on a CSV the command produced (`csv`): on `written`
 // when the command has written it there (-o), otherwise on a temporary copy

@@ -87,6 +87,7 @@ void run_pipeline_3d(const YamlNode& root, const fs::path& dir, const OutputOpti
     if (out.vtk) stage.vtk_dir = (dir / "vtk").string();
     stage.quiet = quiet;
     run_df3_scenario(root, cut.model, blocks_h5, stage);
+    report_after_run(stage.results_path, dir, out, quiet);
   }
 }
 
