@@ -44,11 +44,17 @@ TEST(IntensityMeasures, ConstantAcceleration) {
 
 // A triangle 0, 2, 0 m/s^2 at dt = 1 s is linear between the samples, so
 // int a^2 dt = 2 int_0^1 (2 t)^2 dt = 8/3 exactly and Ia = pi / (2 g) 8/3.
-// Its Husid plot at t = 1 s is 1/2 (symmetry).
-TEST(IntensityMeasures, TriangleAriasIsExact) {
+// Its Husid plot at t = 1 s is 1/2 (symmetry); on the rise H(t) = (4 t^3 / 3)
+// / (8 / 3) = t^3 / 2, so H = 0.05 at t5 = 0.1^(1/3) = 0.4641589 s, and by
+// symmetry t95 = 2 - t5, D5-95 = 2 - 2 (0.4641589) = 1.0716822 s.
+TEST(IntensityMeasures, TriangleIsExact) {
   const std::vector<double> a{0.0, 2.0, 0.0};
-  EXPECT_NEAR(intensity_measures(a, 1.0).arias, kPi / (2.0 * kG) * 8.0 / 3.0, 1e-15);
+  const IntensityMeasures m = intensity_measures(a, 1.0);
+  EXPECT_NEAR(m.arias, kPi / (2.0 * kG) * 8.0 / 3.0, 1e-15);
   EXPECT_NEAR(husid(a, 1.0)[1], 0.5, 1e-15);
+  EXPECT_NEAR(m.t5, std::cbrt(0.1), 1e-12);
+  EXPECT_NEAR(m.t95, 2.0 - std::cbrt(0.1), 1e-12);
+  EXPECT_NEAR(m.significant_duration, 1.0716822, 1e-7);
 }
 
 // A sine A sin(2 pi f t) over whole cycles: int a^2 dt = A^2 T / 2, so

@@ -31,14 +31,23 @@ std::vector<double> cumulative_square(const std::vector<double>& a, double dt) {
   return c;
 }
 
-// Time (from the first sample) at which the rising curve h first reaches level.
-double time_at_level(const std::vector<double>& h, double dt, double level) {
-  for (std::size_t i = 1; i < h.size(); ++i)
-    if (h[i] >= level) {
-      const double w = h[i] > h[i - 1] ? (level - h[i - 1]) / (h[i] - h[i - 1]) : 1.0;
-      return (static_cast<double>(i - 1) + w) * dt;
+// Time (from the first sample) at which the cumulative int a^2 dt, c at the
+// samples, first reaches `target`: within the step from a0 to a1 it is
+// c_i + a0^2 s + a0 k s^2 + k^2 s^3 / 3 (k the slope), rising in s, solved by
+// bisection.
+double time_at_level(const std::vector<double>& a, const std::vector<double>& c, double dt, double target) {
+  for (std::size_t i = 1; i < c.size(); ++i) {
+    if (c[i] < target) continue;
+    const double a0 = a[i - 1], k = (a[i] - a[i - 1]) / dt;
+    auto cumulative = [&](double s) { return c[i - 1] + a0 * a0 * s + a0 * k * s * s + k * k * s * s * s / 3.0; };
+    double lo = 0.0, hi = dt;
+    for (int it = 0; it < 60; ++it) {
+      const double mid = 0.5 * (lo + hi);
+      (cumulative(mid) < target ? lo : hi) = mid;
     }
-  return static_cast<double>(h.size() - 1) * dt;
+    return static_cast<double>(i - 1) * dt + 0.5 * (lo + hi);
+  }
+  return static_cast<double>(c.size() - 1) * dt;
 }
 
 }  // namespace
@@ -90,9 +99,8 @@ IntensityMeasures intensity_measures(const std::vector<double>& a, double dt) {
   }
   const std::vector<double> c = cumulative_square(a, dt);
   m.arias = kPi / (2.0 * kRecordGravity) * c.back();
-  const std::vector<double> h = husid(a, dt);
-  m.t5 = time_at_level(h, dt, 0.05);
-  m.t95 = time_at_level(h, dt, 0.95);
+  m.t5 = time_at_level(a, c, dt, 0.05 * c.back());
+  m.t95 = time_at_level(a, c, dt, 0.95 * c.back());
   m.significant_duration = m.t95 - m.t5;
   m.mean_period = mean_period(a, dt);
   const std::vector<double> periods = predominant_periods();

@@ -16,8 +16,7 @@ namespace {
 void check_beam(const ShearBeam& beam) {
   if (!(beam.period >= 0.0) || !std::isfinite(beam.period))
     throw InputError("Shear beam: the period Ts must be zero or positive.");
-  if (!(beam.damping >= 0.0 && beam.damping < 1.0))
-    throw InputError("Shear beam: the damping ratio must lie in 0..1.");
+  if (!(beam.damping >= 0.0 && beam.damping < 1.0)) throw InputError("Shear beam: the damping ratio must lie in 0..1.");
 }
 
 }  // namespace

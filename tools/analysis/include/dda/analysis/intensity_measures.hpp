@@ -11,7 +11,7 @@
 //    the linear segments: dt (a_i^2 + a_i a_{i+1} + a_{i+1}^2) / 3 per step.
 //  * Husid plot H(t) = int_0^t a^2 / int_0^T a^2 at the samples; the 5-95 %
 //    significant duration D5-95 = t(H = 0.95) - t(H = 0.05), the two times
-//    interpolated linearly between samples.
+//    found within their steps on the exact (cubic) cumulative integral.
 //  * Mean period (Rathje, Abrahamson and Bray 1998, JGGE 124(2), 150-159;
 //    Rathje, Faraj, Russell and Bray 2004, Earthquake Spectra 20(1), 119-144):
 //    Tm = sum C_i^2 / f_i / sum C_i^2 over the Fourier amplitudes C_i at the
@@ -26,14 +26,14 @@
 namespace dda::analysis {
 
 struct IntensityMeasures {
-  double pga = 0.0;               // m/s^2
-  double pgv = 0.0;               // m/s
-  double pgd = 0.0;               // m
-  double arias = 0.0;             // m/s
-  double t5 = 0.0, t95 = 0.0;     // s from the first sample: H = 0.05, 0.95
+  double pga = 0.0;                   // m/s^2
+  double pgv = 0.0;                   // m/s
+  double pgd = 0.0;                   // m
+  double arias = 0.0;                 // m/s
+  double t5 = 0.0, t95 = 0.0;         // s from the first sample: H = 0.05, 0.95
   double significant_duration = 0.0;  // s, t95 - t5
-  double mean_period = 0.0;       // s; 0 when no energy lies in 0.25..20 Hz
-  double predominant_period = 0.0;  // s
+  double mean_period = 0.0;           // s; 0 when no energy lies in 0.25..20 Hz
+  double predominant_period = 0.0;    // s
 };
 
 std::vector<double> predominant_periods();  // kPredominantPeriods, ascending

@@ -28,8 +28,8 @@
 
 namespace dda::analysis {
 
-constexpr double kMassFraction = 0.63661977236758134;   // 2 / pi
-constexpr double kParticipation = 1.2732395447351627;   // 4 / pi
+constexpr double kMassFraction = 0.63661977236758134;  // 2 / pi
+constexpr double kParticipation = 1.2732395447351627;  // 4 / pi
 
 struct ShearBeam {
   double period = 0.0;    // Ts (s); 0: rigid
