@@ -566,6 +566,27 @@ PY
     || fail "--record and --records"
   [ "$(json_get one.json "len(d['rows'])")" = 2 ] || fail "two rows for --polarity normal"
   near "$(json_get one.json "d['rows'][0]['rigid_m'] * 100")" "$(row_col table.csv 0 rigid_cm)" 1e-9 "rigid, alone"
+  # Bray and Travasarou (2007) with --magnitude, from the row's own Sa(1.5 Ts)
+  # and the equation of docs/analytical.md; the equivalent-linear mass (H 20 m,
+  # Vs 200 m/s: Ts0 = 0.4 s) reports the softened period Ts0 / sqrt(G/Gmax).
+  "$DDA" newmark --ky 0.2 --records recs/a05.txt --units g --method decoupled --height 20 --vs 200 \
+    --reference-strain 5e-4 --magnitude 6.5 --polarity normal -o bt.csv -q || fail "decoupled, equivalent-linear"
+  /usr/bin/python3 - <<'PY' || fail "Bray and Travasarou / equivalent-linear columns"
+import csv, math
+from statistics import NormalDist
+r = list(csv.DictReader(open("bt.csv")))[0]
+ky, ts, sa, m = 0.2, 0.4, float(r["sa_1_5ts_g"]), 6.5
+lk, ls = math.log(ky), math.log(sa)
+d = math.exp(-1.10 - 2.83 * lk - 0.333 * lk ** 2 + 0.566 * lk * ls + 3.04 * ls - 0.244 * ls ** 2 + 1.50 * ts + 0.278 * (m - 7))
+assert abs(float(r["bray_travasarou2007_cm"]) / d - 1) < 1e-12, (r["bray_travasarou2007_cm"], d)
+p0 = 1 - NormalDist().cdf(-1.76 - 3.22 * lk - 0.484 * ts * lk + 3.52 * ls)
+assert abs(float(r["bray_travasarou2007_p_zero"]) - p0) < 1e-12, (r["bray_travasarou2007_p_zero"], p0)
+g = float(r["modulus_ratio"])
+assert 0 < g < 1, g
+assert abs(float(r["ts_s"]) - 0.4 / math.sqrt(g)) < 1e-12, (r["ts_s"], g)
+assert abs(float(r["damping"]) - (0.05 + 0.2 * (1 - g))) < 1e-12, r["damping"]
+assert float(r["decoupled_cm"]) > 0 and float(r["kmax_g"]) > 0
+PY
   # Without -o, the table goes to the standard output.
   "$DDA" newmark --ky 0.2 --records recs/a05.txt --units g | head -1 | grep -q "^record,polarity,ky," \
     || fail "the table on stdout"

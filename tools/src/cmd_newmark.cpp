@@ -158,9 +158,11 @@ void add_newmark_command(CLI::App& app, const GlobalOptions& global) {
   cmd->add_option(
       "--damping-max", ra.curve.damping_max,
       "Equivalent-linear: damping at G/Gmax = 0 (default 0.25), xi = xi_min + (xi_max - xi_min)(1 - G/Gmax)");
-  cmd->add_option("--magnitude", ra.magnitude, "Earthquake magnitude, for Bray and Travasarou (2007)")->needs(ky);
-  cmd->callback([opt, &global, ky, dip, phi, ts, height, vs] {
+  CLI::Option* magnitude =
+      cmd->add_option("--magnitude", ra.magnitude, "Earthquake magnitude, for Bray and Travasarou (2007)")->needs(ky);
+  cmd->callback([opt, &global, ky, dip, phi, ts, height, vs, magnitude] {
     if (*ky) {
+      opt->records.has_magnitude = magnitude->count() > 0;
       opt->has_ts = ts->count() > 0;
       opt->has_height = height->count() > 0;
       opt->has_vs = vs->count() > 0;

@@ -51,7 +51,9 @@ RecordResult analyse_one(const std::string& path, const RecordOptions& options, 
     r.effective_strain = el.effective_strain;
   }
   // Bray and Travasarou's Sa(1.5 Ts), Ts the small-strain period; the PGA below 0.05 s.
-  r.sa_bt = an.beam.period < 0.05 ? r.im.pga : analysis::response_spectrum(a, r.dt, {1.5 * an.beam.period}).psa.front();
+  if (an.has_magnitude)
+    r.sa_bt =
+        an.beam.period < 0.05 ? r.im.pga : analysis::response_spectrum(a, r.dt, {1.5 * an.beam.period}).psa.front();
   const double ay = an.ky * kG;
   for (int sign : {1, -1}) {
     if ((sign > 0 && !an.normal) || (sign < 0 && !an.inverse)) continue;
