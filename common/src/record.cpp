@@ -83,11 +83,25 @@ Eigen::Vector3d unit_direction(const RecordReadOptions& options, const std::stri
   return options.direction / n;
 }
 
-void check_times(const std::vector<double>& t, const std::vector<std::size_t>& lines, const std::string& name) {
+void check_times(const std::vector<double>& t, const std::vector<std::size_t>& lines, const std::string& name,
+                 bool uniform) {
   for (std::size_t i = 1; i < t.size(); ++i)
     if (!(t[i] > t[i - 1]))
       throw InputError(name + ", line " + std::to_string(lines[i]) + ": time " + num(t[i]) +
                        " s is not greater than the previous time " + num(t[i - 1]) + " s (times must increase).");
+  if (!uniform) return;
+  const double first = t[1] - t[0];
+  for (std::size_t i = 2; i < t.size(); ++i)
+    if (std::abs(t[i] - t[i - 1] - first) > 1e-6 * first)
+      throw InputError(name + ", line " + std::to_string(lines[i]) + ": time step " + num(t[i] - t[i - 1]) +
+                       " s where the first step is " + num(first) + " s (the record must be uniformly sampled).");
+}
+
+// At least two samples; `line` is the line of the only sample, if any.
+void check_sample_count(std::size_t samples, std::size_t line, const std::string& name) {
+  if (samples == 0) throw InputError(name + ": no samples (the record is empty).");
+  if (samples < 2)
+    throw InputError(name + ", line " + std::to_string(line) + ": only one sample; a record needs at least two.");
 }
 
 }  // namespace
@@ -169,9 +183,8 @@ AccelRecord parse_record_csv(const std::string& text, const std::string& name, c
       for (int c = 0; c < 3; ++c) rec.a[c].push_back(c + 1 < static_cast<int>(columns) ? factor * v[c + 1] : 0.0);
     }
   }
-  if (rec.t.empty()) throw InputError(name + ": no samples (the record is empty).");
-  if (rec.t.size() < 2) throw InputError(name + ": only one sample; a record needs at least two.");
-  check_times(rec.t, lines, name);
+  check_sample_count(rec.t.size(), lines.empty() ? 0 : lines.front(), name);
+  check_times(rec.t, lines, name, options.require_uniform_step);
   return rec;
 }
 
@@ -232,7 +245,7 @@ AccelRecord parse_record_at2(const std::string& text, const std::string& name, c
   }
   if (npts <= 0 || !(dt > 0.0) || !std::isfinite(dt))
     throw InputError(name + ", line 4: no valid NPTS and DT (expected e.g. 'NPTS=  3929, DT=   .0100 SEC').");
-  if (npts < 2) throw InputError(name + ": only one sample; a record needs at least two.");
+  if (npts < 2) throw InputError(name + ", line 4: NPTS= 1; a record needs at least two samples.");
   const Eigen::Vector3d dir = unit_direction(options, name);
   const double factor = unit_factor(units);
   AccelRecord rec;
@@ -262,6 +275,36 @@ AccelRecord parse_record_at2(const std::string& text, const std::string& name, c
   return rec;
 }
 
+AccelRecord parse_record_values(const std::string& text, const std::string& name, const RecordReadOptions& options) {
+  if (!(options.sample_step > 0.0) || !std::isfinite(options.sample_step))
+    throw InputError(name + ": a file of values only needs a positive sample step.");
+  if (options.units == AccelUnits::unspecified)
+    throw InputError(name + ": the units of the acceleration values are not given (g or m/s2).");
+  const double factor = unit_factor(options.units);
+  const Eigen::Vector3d dir = unit_direction(options, name);
+  AccelRecord rec;
+  rec.source = name;
+  std::istringstream in(text);
+  std::string line;
+  std::size_t line_no = 0, first_line = 0;
+  while (read_text_line(in, line, name, line_no + 1)) {
+    ++line_no;
+    const std::string tl = trim(line);
+    if (tl.empty() || tl[0] == '#') continue;
+    double v = 0.0;
+    if (!parse_number(tl, v))
+      throw InputError(name + ", line " + std::to_string(line_no) + ": '" + tl +
+                       "' is not a number (a file of values holds one acceleration per line).");
+    if (!std::isfinite(v))
+      throw InputError(name + ", line " + std::to_string(line_no) + ": '" + tl + "' is not a finite number.");
+    if (first_line == 0) first_line = line_no;
+    rec.t.push_back(static_cast<double>(rec.t.size()) * options.sample_step);
+    for (int c = 0; c < 3; ++c) rec.a[c].push_back(factor * v * dir[c]);
+  }
+  check_sample_count(rec.t.size(), first_line, name);
+  return rec;
+}
+
 AccelRecord read_record_csv(const std::string& path, const RecordReadOptions& options) {
   return parse_record_csv(read_text(path), path, options);
 }
@@ -271,6 +314,7 @@ AccelRecord read_record_at2(const std::string& path, const RecordReadOptions& op
 }
 
 AccelRecord read_record(const std::string& path, const RecordReadOptions& options) {
+  if (options.sample_step > 0.0) return parse_record_values(read_text(path), path, options);
   const std::string ext = lower(std::filesystem::path(path).extension().string());
   return ext == ".at2" ? read_record_at2(path, options) : read_record_csv(path, options);
 }

@@ -435,6 +435,179 @@ case_spectra_errors() {
   expect_usage_error "$DDA" spectra
 }
 
+# The record formats of docs/formats.md, each written here with the same
+# record: a triangle pulse 0, 0.5 g, 0 at dt = 0.01 s followed by zeros to
+# t = 1 s. Every reader must give the same intensity measures, and these
+# match the hand values (m/s^2, m/s, m; a_p = 0.5 (9.81) = 4.905):
+#   PGV = a_p dt = 0.04905 (the pulse's area); PGD = 0.04905 (1 - 0.01) = 0.0485595
+#     (the trapezoidal displacement: 0.0004905 at t = 0.02, then 0.0004905 a step);
+#   Ia = pi / (2 g) (2 a_p^2 dt / 3) = 0.1601219 (0.1603935) = 0.0256825;
+#   t5 = (0.1)^(1/3) dt = 0.00464159 s (H = t^3 / (2 dt^3) on the rise), D5-95 = 2 dt - 2 t5 = 0.0107168 s.
+write_triangle_records() {
+  /usr/bin/python3 - <<'PY'
+vals = [0.0, 0.5] + [0.0] * 99
+with open("pulse.AT2", "w") as f:
+    f.write("PEER NGA STRONG MOTION DATABASE RECORD\nTEST, PULSE\nACCELERATION TIME SERIES IN UNITS OF G\n")
+    f.write("NPTS=  %d, DT=   .0100 SEC\n" % len(vals))
+    for i in range(0, len(vals), 5):
+        f.write("".join("%15.7E" % v for v in vals[i:i + 5]) + "\n")
+with open("pulse_slammer.txt", "w") as f:
+    for i, v in enumerate(vals):
+        f.write("%.2f\t%g\n" % (i * 0.01, v))
+with open("pulse_values.txt", "w") as f:
+    f.write("\n".join("%g" % v for v in vals) + "\n")
+with open("pulse.csv", "w") as f:
+    f.write("t,a\n" + "".join("%.2f,%g\n" % (i * 0.01, v) for i, v in enumerate(vals)))
+PY
+}
+
+case_record_intensity() {
+  write_triangle_records
+  "$DDA" record pulse.AT2 --json --husid husid.csv > at2.json || fail "AT2"
+  "$DDA" record pulse_slammer.txt --units g --json > slammer.json || fail "SLAMMER two-column"
+  "$DDA" record pulse_values.txt --units g --record-dt 0.01 --json > values.json || fail "values with --record-dt"
+  "$DDA" record pulse.csv --units g --json > csv.json || fail "CSV"
+  for f in slammer values csv; do
+    /usr/bin/python3 -c "
+import json, sys
+a = json.load(open('at2.json'))['intensity_measures']['x']
+b = json.load(open(sys.argv[1]))['intensity_measures']['x']
+for k in a:
+    assert abs(a[k] - b[k]) <= 1e-12 * max(1.0, abs(a[k])), (k, a[k], b[k])
+" "$f.json" || fail "$f: intensity measures differ from the AT2's"
+  done
+  m="d['intensity_measures']['x']"
+  near "$(json_get at2.json "$m['pga_g']")" 0.5 1e-12 "PGA"
+  near "$(json_get at2.json "$m['pgv']")" 0.04905 1e-12 "PGV"
+  near "$(json_get at2.json "$m['pgd']")" 0.0485595 1e-10 "PGD"
+  near "$(json_get at2.json "$m['arias_intensity']")" 0.0256825 1e-7 "Arias intensity"
+  near "$(json_get at2.json "$m['t5']")" 0.00464159 1e-8 "t5"
+  near "$(json_get at2.json "$m['significant_duration_5_95']")" 0.0107168 1e-7 "D5-95"
+  [ "$(json_get at2.json "list(d['intensity_measures'].keys())")" = "['x']" ] || fail "only the x component is not zero"
+  head -1 husid.csv | grep -q '^t,husid_x,husid_y,husid_z$' || fail "Husid header"
+  near "$(row_col husid.csv 1 husid_x)" 0.5 1e-12 "Husid at the crest"
+  near "$(last_col husid.csv husid_x)" 1 1e-12 "Husid at the end"
+  "$DDA" record pulse.csv --units g | grep -q "Arias" || fail "the text summary gives the Arias intensity"
+}
+
+# Bad records (docs/analytical.md): one line naming the file and the line,
+# exit status 1, from dda record and dda newmark --ky alike.
+case_bad_record_steps() {
+  printf 't,a\n0,0.1\n0.01,0.2\n0.03,0.1\n0.04,0\n' > uneven.csv
+  expect_error 1 "uneven.csv, line 4: time step 0.02 s where the first step is 0.01 s" -- \
+    "$DDA" record uneven.csv --units g
+  "$DDA" record uneven.csv --units g --resample 0.01 > /dev/null || fail "--resample makes a record uniform"
+  expect_error 1 "uneven.csv, line 4: time step" -- "$DDA" newmark --ky 0.1 --records uneven.csv --units g
+  printf '0.1\nnan\n0.2\n' > nan.txt
+  expect_error 1 "nan.txt, line 2: 'nan' is not a finite number" -- "$DDA" record nan.txt --units g --record-dt 0.01
+  expect_error 1 "nan.txt, line 2: 'nan' is not a finite number" -- \
+    "$DDA" newmark --ky 0.1 --records nan.txt --units g --record-dt 0.01
+  printf '# one sample\n0, 0.1\n' > one.csv
+  expect_error 1 "one.csv, line 2: only one sample" -- "$DDA" record one.csv --units g
+  expect_error 1 "one.csv, line 2: only one sample" -- "$DDA" newmark --ky 0.1 --record one.csv --units g
+  printf 'x\nx\nUNITS OF G\nNPTS= 1, DT= 0.01\n0.1\n' > one.at2
+  expect_error 1 "one.at2, line 4: NPTS= 1" -- "$DDA" record one.at2
+}
+
+# dda newmark --ky over a folder of SLAMMER two-column records, both
+# polarities, rigid, decoupled and coupled. Records: A sin(2 pi t), A = 0.5 g
+# and 0.4 g, 5 s at dt = 2 ms. Normal polarity, rigid: 5 slips of the
+# analytical cycle (k_y = 0.2: start t1 = asin(k_y g / A) / w, stop t2 where
+# v = (A / w)(cos w t1 - cos w t) - k_y g (t - t1) = 0), to the linear
+# interpolation between samples (~5e-5). A stiff mass (Ts = 0.003 s) slides
+# as the rigid block (docs/analytical.md: 1e-5 at this Ts).
+case_newmark_records() {
+  mkdir recs
+  /usr/bin/python3 - <<'PY'
+import math
+for name, amp in (("a05.txt", 0.5), ("b04.txt", 0.4)):
+    with open("recs/" + name, "w") as f:
+        for i in range(2501):
+            t = i * 0.002
+            f.write("%.3f\t%.15g\n" % (t, amp * math.sin(2 * math.pi * t)))
+PY
+  "$DDA" newmark --ky 0.2 --records recs --units g --method all --ts 0.003 -o table.csv -q || fail "newmark --ky"
+  [ "$(wc -l < table.csv)" -eq 5 ] || fail "expected a header and 4 rows (2 records x 2 polarities)"
+  /usr/bin/python3 - <<'PY' || fail "table"
+import csv, math
+rows = list(csv.DictReader(open("table.csv")))
+def slip(A, ay, w=2 * math.pi):
+    t1 = math.asin(ay / A) / w
+    v = lambda t: A / w * (math.cos(w * t1) - math.cos(w * t)) - ay * (t - t1)
+    lo, hi = t1 + 0.5 * math.pi / w, t1 + 2 * math.pi / w
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        if v(mid) > 0: lo = mid
+        else: hi = mid
+    t2 = 0.5 * (lo + hi)
+    return A / w * (math.cos(w * t1) * (t2 - t1) - (math.sin(w * t2) - math.sin(w * t1)) / w) - 0.5 * ay * (t2 - t1) ** 2
+g = 9.81
+assert [r["polarity"] for r in rows] == ["normal", "inverse", "normal", "inverse"], rows
+assert rows[0]["record"].endswith("a05.txt") and rows[2]["record"].endswith("b04.txt")
+for r, amp in ((rows[0], 0.5), (rows[2], 0.4)):
+    expected = 100 * 5 * slip(amp * g, 0.2 * g)
+    for col in ("rigid_cm", "decoupled_cm", "coupled_cm"):
+        got = float(r[col])
+        assert abs(got / expected - 1) < 2e-4, (col, amp, got, expected)
+    pga = float(r["pga_g"])
+    assert abs(pga - amp) < 1e-12, pga
+    # Jibson (2007), the k_c/a_max model, from the row's own PGA.
+    ratio = 0.2 / pga
+    jib = 10 ** 0.215 * (1 - ratio) ** 2.341 * ratio ** -1.438
+    assert abs(float(r["jibson2007_ratio_cm"]) / jib - 1) < 1e-12, (r["jibson2007_ratio_cm"], jib)
+# Inverse polarity: the last lobe ends with the record, so the slip is cut short: 4 to 5 cycles.
+for r, amp in ((rows[1], 0.5), (rows[3], 0.4)):
+    one = 100 * slip(amp * g, 0.2 * g)
+    assert 4 * one < float(r["rigid_cm"]) < 5 * one, (r["rigid_cm"], one)
+    assert r["pga_g"] == rows[0 if amp == 0.5 else 2]["pga_g"]
+PY
+  # The same records one by one, --polarity normal, rigid: the same numbers.
+  "$DDA" newmark --ky 0.2 --record recs/a05.txt --records recs/b04.txt --units g --polarity normal --json > one.json \
+    || fail "--record and --records"
+  [ "$(json_get one.json "len(d['rows'])")" = 2 ] || fail "two rows for --polarity normal"
+  near "$(json_get one.json "d['rows'][0]['rigid_m'] * 100")" "$(row_col table.csv 0 rigid_cm)" 1e-9 "rigid, alone"
+  # Bray and Travasarou (2007) with --magnitude, from the row's own Sa(1.5 Ts)
+  # and the equation of docs/analytical.md; the equivalent-linear mass (H 20 m,
+  # Vs 200 m/s: Ts0 = 0.4 s) reports the softened period Ts0 / sqrt(G/Gmax).
+  "$DDA" newmark --ky 0.2 --records recs/a05.txt --units g --method decoupled --height 20 --vs 200 \
+    --reference-strain 5e-4 --magnitude 6.5 --polarity normal -o bt.csv -q || fail "decoupled, equivalent-linear"
+  /usr/bin/python3 - <<'PY' || fail "Bray and Travasarou / equivalent-linear columns"
+import csv, math
+from statistics import NormalDist
+r = list(csv.DictReader(open("bt.csv")))[0]
+ky, ts, sa, m = 0.2, 0.4, float(r["sa_1_5ts_g"]), 6.5
+lk, ls = math.log(ky), math.log(sa)
+d = math.exp(-1.10 - 2.83 * lk - 0.333 * lk ** 2 + 0.566 * lk * ls + 3.04 * ls - 0.244 * ls ** 2 + 1.50 * ts + 0.278 * (m - 7))
+assert abs(float(r["bray_travasarou2007_cm"]) / d - 1) < 1e-12, (r["bray_travasarou2007_cm"], d)
+p0 = 1 - NormalDist().cdf(-1.76 - 3.22 * lk - 0.484 * ts * lk + 3.52 * ls)
+assert abs(float(r["bray_travasarou2007_p_zero"]) - p0) < 1e-12, (r["bray_travasarou2007_p_zero"], p0)
+g = float(r["modulus_ratio"])
+assert 0 < g < 1, g
+assert abs(float(r["ts_s"]) - 0.4 / math.sqrt(g)) < 1e-12, (r["ts_s"], g)
+assert abs(float(r["damping"]) - (0.05 + 0.2 * (1 - g))) < 1e-12, r["damping"]
+assert float(r["decoupled_cm"]) > 0 and float(r["kmax_g"]) > 0
+PY
+  # Without -o, the table goes to the standard output.
+  "$DDA" newmark --ky 0.2 --records recs/a05.txt --units g | head -1 | grep -q "^record,polarity,ky," \
+    || fail "the table on stdout"
+}
+
+case_newmark_records_errors() {
+  mkdir empty
+  printf '0\t0.1\n0.01\t0.2\n' > r.txt
+  expect_error 1 "empty: no record files in the folder" -- "$DDA" newmark --ky 0.1 --records empty --units g
+  expect_error 1 "--ky: give the records" -- "$DDA" newmark --ky 0.1
+  expect_error 1 "--ky: the yield coefficient must be positive" -- "$DDA" newmark --ky -0.1 --records r.txt --units g
+  expect_error 1 "give the sliding mass's period --ts" -- \
+    "$DDA" newmark --ky 0.1 --records r.txt --units g --method coupled
+  expect_error 1 "--method: 'stiff' is not rigid" -- "$DDA" newmark --ky 0.1 --records r.txt --units g --method stiff
+  expect_error 1 "--polarity: 'up' is not" -- "$DDA" newmark --ky 0.1 --records r.txt --units g --polarity up
+  expect_error 1 "give --dip and --phi" -- "$DDA" newmark --sine 0.5 --freq 1 --duration 1
+  expect_usage_error "$DDA" newmark --ky 0.1 --dip 20 --records r.txt --units g
+  expect_usage_error "$DDA" newmark --ts 0.1 --records r.txt
+  expect_error 1 "r.txt: will not write the output over the input r.txt" -- "$DDA" newmark --ky 0.1 --records r.txt --units g -o r.txt
+}
+
 declare -F "case_$CASE" > /dev/null || fail "no such case"
 "case_$CASE"
 echo "PASS [$CASE]"

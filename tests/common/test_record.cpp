@@ -7,9 +7,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <string>
 
 #include "dda/common/error.hpp"
+#include "scratch_dir_test.hpp"
 
 namespace {
 
@@ -176,4 +178,65 @@ TEST(Record, FilterNeedsUniformSteps) {
   si.units = dda::AccelUnits::m_per_s2;
   auto r = dda::parse_record_csv("0,0\n1,2\n3,2\n", "rec.csv", si);
   EXPECT_THROW(dda::filter_record(r, {dda::FilterKind::lowpass, 2, 0, 0.1}), dda::InputError);
+}
+
+// The four record formats, each read from a small file written here
+// (docs/formats.md, "Acceleration records"): a PEER NGA .AT2, SLAMMER's
+// two-column time-acceleration file in g (tab separated), a plain column of
+// values with the step given, and a CSV. Each holds the same 0.1, -0.2, 0.3 g
+// at 0.01 s, so every reader must give the same record.
+class RecordFiles : public dda::testing::ScratchDirTest {
+ protected:
+  RecordFiles() : ScratchDirTest("dda-record-files") {}
+  std::string write(const std::string& name, const std::string& text) {
+    std::ofstream(path(name)) << text;
+    return path(name);
+  }
+  void expect_the_record(const dda::AccelRecord& r) {
+    ASSERT_EQ(r.size(), 3u);
+    EXPECT_NEAR(r.t[2], 0.02, 1e-15);
+    EXPECT_NEAR(r.a[0][0], 0.1 * 9.81, 1e-14);
+    EXPECT_NEAR(r.a[0][1], -0.2 * 9.81, 1e-14);
+    EXPECT_NEAR(r.a[0][2], 0.3 * 9.81, 1e-14);
+    EXPECT_EQ(r.a[1][2], 0.0);
+  }
+};
+
+TEST_F(RecordFiles, EveryFormatGivesTheSameRecord) {
+  dda::RecordReadOptions none;  // the AT2 declares g
+  expect_the_record(dda::read_record(
+      write("r.AT2", "PEER NGA\nEVENT\nACCELERATION TIME SERIES IN UNITS OF G\nNPTS=    3, DT=   .0100 SEC\n"
+                     "  .1000000E+00 -.2000000E+00  .3000000E+00\n"),
+      none));
+  dda::RecordReadOptions o = in_g();
+  o.require_uniform_step = true;
+  expect_the_record(dda::read_record(write("slammer.txt", "0\t0.1\n0.01\t-0.2\n0.02\t0.3\n"), o));
+  expect_the_record(dda::read_record(write("r.csv", "t,a\n0,0.1\n0.01,-0.2\n0.02,0.3\n"), o));
+  o.sample_step = 0.01;
+  expect_the_record(dda::read_record(write("values.txt", "# one value a line\n0.1\n\n-0.2\n0.3\n"), o));
+}
+
+// Bad records: one sentence naming the file and the line.
+TEST_F(RecordFiles, BadRecordsNameFileAndLine) {
+  dda::RecordReadOptions o = in_g();
+  o.require_uniform_step = true;
+  const std::string uneven = write("uneven.csv", "t,a\n0,0.1\n0.01,0.2\n0.03,0.3\n");
+  EXPECT_EQ(error_of([&] { dda::read_record(uneven, o); }),
+            uneven + ", line 4: time step 0.02 s where the first step is 0.01 s (the record must be uniformly sampled).");
+  o.require_uniform_step = false;  // the same file is a record for tools that interpolate
+  EXPECT_EQ(dda::read_record(uneven, o).size(), 3u);
+  const std::string one = write("one.csv", "# header\n0,0.1\n");
+  EXPECT_EQ(error_of([&] { dda::read_record(one, o); }),
+            one + ", line 2: only one sample; a record needs at least two.");
+  o.sample_step = 0.01;
+  const std::string nan = write("nan.txt", "0.1\nnan\n");
+  EXPECT_EQ(error_of([&] { dda::read_record(nan, o); }), nan + ", line 2: 'nan' is not a finite number.");
+  const std::string two = write("two.txt", "0 0.1\n");
+  EXPECT_NE(error_of([&] { dda::read_record(two, o); }).find(two + ", line 1: '0 0.1' is not a number"),
+            std::string::npos);
+  const std::string single = write("single.txt", "\n0.1\n");
+  EXPECT_EQ(error_of([&] { dda::read_record(single, o); }),
+            single + ", line 2: only one sample; a record needs at least two.");
+  o.units = dda::AccelUnits::unspecified;
+  EXPECT_NE(error_of([&] { dda::read_record(single, o); }).find("units"), std::string::npos);
 }

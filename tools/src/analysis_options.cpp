@@ -12,12 +12,18 @@ namespace dda::cli {
 using analysis::Vec3;
 
 void add_record_options(CLI::App* cmd, RecordOptions& o, bool positional) {
+  const char* formats =
+      "Acceleration record: CSV (t, ax, ay[, az] or t, a; SLAMMER's two-column files too), PEER NGA .AT2, or "
+      "values only with --record-dt";
   if (positional)
-    cmd->add_option("record", o.path, "Acceleration record: CSV (t, ax, ay[, az] or t, a) or PEER NGA .AT2")
-        ->required();
+    cmd->add_option("record", o.path, formats)->required();
   else
-    cmd->add_option("--record", o.path, "Acceleration record: CSV (t, ax, ay[, az] or t, a) or PEER NGA .AT2");
-  cmd->add_option("--units", o.units, "Units of the record values: g or m/s2 (required for CSV; AT2 declares g)");
+    cmd->add_option("--record", o.path, formats);
+  cmd->add_option("--units", o.units,
+                  "Units of the record values: g or m/s2 (required for CSV and values; AT2 declares g)");
+  cmd->add_option("--record-dt", o.sample_step,
+                  "The record file holds values only (one a line, e.g. SLAMMER's constant-step files), this many "
+                  "seconds apart");
   cmd->add_option("--axis", o.axis,
                   "Direction of a one-component record: x (east), y (north), z (up), -x ..., or a horizontal "
                   "azimuth in degrees (default x)");
@@ -29,11 +35,17 @@ void add_record_options(CLI::App* cmd, RecordOptions& o, bool positional) {
   cmd->add_option("--order", o.order, "Butterworth order (default 4)");
 }
 
-AccelRecord load_record(const RecordOptions& o) {
+AccelRecord load_record(const RecordOptions& o, bool uniform) { return load_record(o, o.path, uniform); }
+
+AccelRecord load_record(const RecordOptions& o, const std::string& path, bool uniform) {
   RecordReadOptions ro;
   if (!o.units.empty()) ro.units = parse_accel_units(o.units, "--units");
   ro.direction = parse_axis(o.axis, "--axis");
-  AccelRecord rec = read_record(o.path, ro);
+  if (o.sample_step < 0.0 || !std::isfinite(o.sample_step))
+    throw InputError("--record-dt: the step between values must be positive.");
+  ro.sample_step = o.sample_step;
+  ro.require_uniform_step = uniform && o.resample == 0.0;
+  AccelRecord rec = read_record(path, ro);
   if (o.scale != 1.0) scale_record(rec, o.scale);
   if (o.resample < 0.0) throw InputError("--resample: the step must be positive.");
   if (o.resample > 0.0) rec = resample_record(rec, o.resample);

@@ -24,10 +24,14 @@ struct RecordOptions {
   double ramp = 0.0;
   double lowpass = 0.0, highpass = 0.0;
   int order = 4;
+  double sample_step = 0.0;  // --record-dt: the file holds values only
 };
 void add_record_options(CLI::App* cmd, RecordOptions& o, bool positional);
 // Reads and processes the record (order: scale, resample, filter, ramp).
-AccelRecord load_record(const RecordOptions& o);
+// With uniform, a CSV must be uniformly sampled unless --resample makes it so.
+AccelRecord load_record(const RecordOptions& o, bool uniform = false);
+// load_record for another file with the same options.
+AccelRecord load_record(const RecordOptions& o, const std::string& path, bool uniform);
 
 // Dynamic input: a record or a sinusoid, as ground or body acceleration.
 struct InputOptions {

@@ -15,9 +15,14 @@
 //    along a caller-given direction). Separators: comma, semicolon, blank or
 //    tab. One optional header line (any line whose first field is not a
 //    number); lines starting with '#' and empty lines are ignored.
+//    SLAMMER's time-acceleration files (two columns, blank or tab
+//    separated, acceleration in g) are this format with units g.
 //  * PEER NGA AT2: four header lines, the fourth holding "NPTS= n, DT= dt"
 //    (or the older "n dt ..." form), then the values, any number per line.
 //    The one component is placed along the caller-given direction.
+//  * Values only (a plain one-column file, SLAMMER's constant-step form):
+//    one acceleration per line, '#' lines and empty lines ignored, sampled at
+//    the caller-given step (RecordReadOptions::sample_step) from t = 0.
 #include <Eigen/Core>
 #include <array>
 #include <optional>
@@ -52,15 +57,23 @@ struct RecordReadOptions {
   AccelUnits units = AccelUnits::unspecified;
   // Direction along which a one-component record acts (normalised on use).
   Eigen::Vector3d direction{1.0, 0.0, 0.0};
+  // > 0: the file holds values only, this many seconds apart (any extension).
+  double sample_step = 0.0;
+  // A CSV whose time steps differ (by more than 1e-6 of the first step) is an
+  // InputError naming the file and line: the intensity measures and the
+  // Newmark analyses of a record series need a uniform step.
+  bool require_uniform_step = false;
 };
 
-// Reads by extension: .at2 (any case) is PEER NGA AT2, anything else is CSV.
+// Reads values only when options.sample_step > 0; otherwise by extension:
+// .at2 (any case) is PEER NGA AT2, anything else is CSV.
 AccelRecord read_record(const std::string& path, const RecordReadOptions& options);
 AccelRecord read_record_csv(const std::string& path, const RecordReadOptions& options);
 AccelRecord read_record_at2(const std::string& path, const RecordReadOptions& options);
 // Parsers of text already in memory (`name` is used in messages).
 AccelRecord parse_record_csv(const std::string& text, const std::string& name, const RecordReadOptions& options);
 AccelRecord parse_record_at2(const std::string& text, const std::string& name, const RecordReadOptions& options);
+AccelRecord parse_record_values(const std::string& text, const std::string& name, const RecordReadOptions& options);
 
 // Writes t, ax, ay, az (m/s^2) with a header line, atomically.
 void write_record_csv(const AccelRecord& record, const std::string& path);
