@@ -233,14 +233,17 @@ AccelRecord parse_record_at2(const std::string& text, const std::string& name, c
       ++j;
     return h4.substr(i, j - i);
   };
+  // A count beyond any file the reader takes (1 GiB) is no count: kept out
+  // of the conversion to long, whose result would be undefined.
+  auto count = [](double v) { return v >= 0.0 && v <= static_cast<double>(kMaxTextFileBytes) ? static_cast<long>(v) : -1L; };
   if (pn != std::string::npos && pd != std::string::npos && h4.find('=', pn) != std::string::npos) {
     double v = 0;
-    if (parse_number(number_after(pn), v)) npts = static_cast<long>(v);
+    if (parse_number(number_after(pn), v)) npts = count(v);
     if (parse_number(number_after(pd), v)) dt = v;
   } else {
     const std::vector<std::string> f = split_fields(header[3]);
     double v = 0;
-    if (f.size() >= 2 && parse_number(f[0], v)) npts = static_cast<long>(v);
+    if (f.size() >= 2 && parse_number(f[0], v)) npts = count(v);
     if (f.size() >= 2 && parse_number(f[1], v)) dt = v;
   }
   if (npts <= 0 || !(dt > 0.0) || !std::isfinite(dt))

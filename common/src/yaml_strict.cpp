@@ -2,8 +2,11 @@
 
 #include <map>
 #include <set>
+#include <sstream>
 #include <tuple>
 #include <vector>
+
+#include <yaml-cpp/eventhandler.h>
 
 #include "dda/common/error.hpp"
 
@@ -68,21 +71,63 @@ int separator_line(const std::string& text, int node_line) {
   return found ? found : node_line;
 }
 
+// Where the first node of each document of a stream is, for the first two
+// documents at most. Not YAML::LoadAll: yaml-cpp 0.7 (Debian 12) never ends
+// it on a stray ',' where a node should start (yaml-cpp issue 1040, fixed in
+// 0.8) — its parser hands out the same empty document again and again
+// without reading on, and LoadAll keeps every one of them until the memory
+// is gone. Found by fuzzing (docs/reliability.md, "Fuzzing").
+class DocumentStarts : public YAML::EventHandler {
+ public:
+  std::vector<YAML::Mark> first_nodes;
+
+  void OnDocumentStart(const YAML::Mark&) override { in_new_document_ = true; }
+  void OnDocumentEnd() override {}
+  void OnNull(const YAML::Mark& m, YAML::anchor_t) override { node_at(m); }
+  void OnAlias(const YAML::Mark& m, YAML::anchor_t) override { node_at(m); }
+  void OnScalar(const YAML::Mark& m, const std::string&, YAML::anchor_t, const std::string&) override { node_at(m); }
+  void OnSequenceStart(const YAML::Mark& m, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {
+    node_at(m);
+  }
+  void OnSequenceEnd() override {}
+  void OnMapStart(const YAML::Mark& m, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {
+    node_at(m);
+  }
+  void OnMapEnd() override {}
+
+ private:
+  void node_at(const YAML::Mark& m) {
+    if (in_new_document_) first_nodes.push_back(m);
+    in_new_document_ = false;
+  }
+  bool in_new_document_ = false;
+};
+
 }  // namespace
 
 YAML::Node parse_document(const std::string& text, const std::string& file_label) {
-  std::vector<YAML::Node> docs;
+  YAML::Node doc;
+  DocumentStarts starts;
   try {
-    docs = YAML::LoadAll(text);
+    std::istringstream in(text);
+    YAML::Parser parser(in);
+    while (starts.first_nodes.size() < 2 && parser.HandleNextDocument(starts)) {
+    }
+    doc = YAML::Load(text);  // the first document only (YAML::Load reads no further)
   } catch (const YAML::Exception& e) {
     throw InputError(file_label + ":" + std::to_string(e.mark.line + 1) + ": is not valid YAML (" + e.msg + ").");
   }
-  if (docs.size() > 1)
-    throw InputError(file_label + ":" + std::to_string(separator_line(text, line_of(docs[1]))) +
+  if (starts.first_nodes.size() > 1) {
+    const YAML::Mark& second = starts.first_nodes[1];
+    if (second.pos == starts.first_nodes[0].pos)  // the parser read nothing: yaml-cpp 0.7's endless loop
+      throw InputError(file_label + ":" + std::to_string(second.line + 1) +
+                       ": is not valid YAML (no node can start at column " + std::to_string(second.column + 1) + ").");
+    throw InputError(file_label + ":" + std::to_string(separator_line(text, second.line + 1)) +
                      ": a second YAML document starts here ('---'); the file must hold exactly one.");
-  if (docs.empty()) return YAML::Node();  // an empty file: the caller says what it should hold
-  DuplicateKeyCheck(file_label).walk(docs.front(), "");
-  return docs.front();
+  }
+  if (starts.first_nodes.empty()) return YAML::Node();  // an empty file: the caller says what it should hold
+  DuplicateKeyCheck(file_label).walk(doc, "");
+  return doc;
 }
 
 }  // namespace dda::yaml_strict

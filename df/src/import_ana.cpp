@@ -109,7 +109,9 @@ struct AnaReader {
     const char* t = e->Attribute("type");
     if (!t) return fallback;
     const double v = parse_number(e, t);
-    if (v != std::floor(v) || v < 0) fail(e, "needs a type attribute with a whole number >= 0, e.g. type=\"1\"");
+    // Bounded before the conversion: a double beyond int has no int value.
+    if (v != std::floor(v) || v < 0 || v > 1e9)
+      fail(e, "needs a type attribute with a whole number >= 0, e.g. type=\"1\"");
     return static_cast<int>(v);
   }
 };
@@ -200,7 +202,7 @@ AnaImport import_ana(const std::string& text, const std::string& label, const Bl
       plane_strain = r.flag(e);
     } else if (name == "Saveinterval") {
       const double n = r.attr_number(e, "step");
-      if (n < 1 || n != std::floor(n)) r.fail(e, "needs step to be a whole number >= 1");
+      if (n < 1 || n != std::floor(n) || n > 1e9) r.fail(e, "needs step to be a whole number >= 1");
       sc.output.every = static_cast<int>(n);
     } else if (name == "Gravaccel") {
       grav_accel = r.attr_number(e, "value");
@@ -283,7 +285,7 @@ AnaImport import_ana(const std::string& text, const std::string& label, const Bl
         std::vector<double> v;
         std::string w;
         while (words >> w) v.push_back(r.parse_number(c, w));
-        if (v.size() % 3 != 0 || v.size() / 3 != static_cast<std::size_t>(n) || n < 1)
+        if (v.size() % 3 != 0 || static_cast<double>(v.size() / 3) != n || n < 1)
           r.fail(c, "must hold numpoints records \"t fx fy;\", got " + std::to_string(v.size()) +
                         " numbers for numpoints=\"" + fmt(n) + "\"");
         loads.emplace_back(c, v);

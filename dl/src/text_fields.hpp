@@ -10,11 +10,15 @@
 
 namespace dda::dl::detail {
 
+// Blanks are what split_fields splits on (std::isspace, form feed and
+// vertical tab included), so a line that is not empty after trim has a
+// field: a line of a lone form feed once reached fields[0] of no fields.
 inline std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\r\n");
-  if (b == std::string::npos) return "";
-  const auto e = s.find_last_not_of(" \t\r\n");
-  return s.substr(b, e - b + 1);
+  const auto blank = [](char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; };
+  std::size_t b = 0, e = s.size();
+  while (b < e && blank(s[b])) ++b;
+  while (e > b && blank(s[e - 1])) --e;
+  return s.substr(b, e - b);
 }
 
 inline std::string upper(std::string s) {

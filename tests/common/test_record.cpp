@@ -99,6 +99,19 @@ TEST(Record, At2) {
   }
 }
 
+// Found by fuzzing (docs/reliability.md, "Fuzzing"): a count too large for
+// a long was converted to one (undefined behaviour) before it was checked.
+TEST(Record, At2HugeCountIsRefused) {
+  for (const std::string count : {"8e65", "1e300", "-5", "nan"}) {
+    try {
+      dda::parse_record_at2("a\nb\nUNITS OF G\n" + count + " 0.01 NPTS, DT\n0.1 0.2\n", "big.at2", {});
+      FAIL() << count;
+    } catch (const dda::InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("big.at2, line 4: no valid NPTS and DT"), std::string::npos) << e.what();
+    }
+  }
+}
+
 TEST(Record, ScaleResampleRamp) {
   dda::RecordReadOptions si;
   si.units = dda::AccelUnits::m_per_s2;

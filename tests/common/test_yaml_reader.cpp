@@ -171,6 +171,16 @@ TEST(YamlStrict, SecondDocumentIsAnErrorNamingTheFileAndLine) {
   EXPECT_EQ(YamlNode::load_string("---\nname: a\n...\n", "s.yaml").text("name"), "a");
 }
 
+// Found by fuzzing (docs/reliability.md, "Fuzzing"): yaml-cpp 0.7's
+// LoadAll never ended on a stray ',' where a node should start, filling
+// the memory; the loader now says where the YAML is wrong.
+TEST(YamlStrict, StrayCommaIsAnErrorNotAnEndlessParse) {
+  EXPECT_EQ(error_of([] { YamlNode::load_string(",\n", "s.yaml"); }),
+            "s.yaml:1: is not valid YAML (no node can start at column 1).");
+  EXPECT_EQ(error_of([] { YamlNode::load_string("# a comment\n, layered: a\n", "s.yaml"); }),
+            "s.yaml:2: is not valid YAML (no node can start at column 1).");
+}
+
 TEST(YamlStrict, LoadFileChecksToo) {
   const std::string path = ::testing::TempDir() + "/twice.yaml";
   FILE* f = std::fopen(path.c_str(), "w");

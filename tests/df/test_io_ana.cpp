@@ -97,5 +97,19 @@ TEST(IoAna, ErrorsNameFileAndLine) {
   EXPECT_FALSE(import_ana(ana, "m.ana", pushblock_blocks(), "b.h5").scenario.input.control.initial_equilibrium);
 }
 
+// Found by fuzzing (docs/reliability.md, "Fuzzing"): whole numbers beyond
+// an int were converted to one (undefined behaviour) before any check.
+TEST(IoAna, HugeWholeNumbersAreRefused) {
+  const std::string ana = pushblock_ana();
+  EXPECT_NE(error_of(replaced(ana, "<Saveinterval step=\"50\"/>", "<Saveinterval step=\"6e68\"/>"))
+                .find("<Saveinterval> needs step to be a whole number >= 1"),
+            std::string::npos);
+  EXPECT_NE(error_of(replaced(ana, "<Blockmaterial type=\"1\">", "<Blockmaterial type=\"1e300\">"))
+                .find("<Blockmaterial> needs a type attribute with a whole number >= 0"),
+            std::string::npos);
+  EXPECT_NE(error_of(replaced(ana, "numpoints=\"2\"", "numpoints=\"1e300\"")).find("numpoints records"),
+            std::string::npos);
+}
+
 }  // namespace
 }  // namespace dda::df

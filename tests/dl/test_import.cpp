@@ -77,6 +77,15 @@ TEST(DlImportCsv, BadFilesNameFileAndLine) {
   EXPECT_NE(csv_error("0,0,1,1,a,b\n").find("dl_bad.csv:1: has 6 columns"), std::string::npos);
 }
 
+// Found by fuzzing (docs/reliability.md, "Fuzzing"): a line of a lone form
+// feed was not blank to trim but had no fields, and the reader took the
+// first of none.
+TEST(DlImportCsv, FormFeedAndVerticalTabLinesAreBlank) {
+  const auto t = read_traces_csv(write_temp("dl_ff.csv", "\f\nx1,y1,x2,y2\n0,0,1,1\n\v \f\n2,2,3,3\n"));
+  ASSERT_EQ(t.size(), 2u);
+  EXPECT_EQ(t[1].line, 5);
+}
+
 TEST(DlImportGeo, TwoBlocks) {
   const LineModel m = import_geo(test::data_path("dl_two_blocks.geo"));
   EXPECT_TRUE(m.domain.empty());  // the outline is made by the lines

@@ -125,7 +125,29 @@ struct Array {
   std::vector<hsize_t> dims;  // as stored
 };
 
-// Opens an existing file read-only after checking that it exists and is HDF5.
+// Bytes in memory that every Reader of `path` opens instead of the file of
+// that name while this lives (HDF5's core driver with a file image), so the
+// fuzz targets (fuzz/) feed the readers without the file system. One at a
+// time and not thread-safe: for fuzzing and tests only.
+class FileImage {
+ public:
+  FileImage(std::string path, const void* data, std::size_t size);
+  ~FileImage();
+  FileImage(const FileImage&) = delete;
+  FileImage& operator=(const FileImage&) = delete;
+
+  const std::string& path() const { return path_; }
+  const void* data() const { return data_; }
+  std::size_t size() const { return size_; }
+
+ private:
+  std::string path_;
+  const void* data_;
+  std::size_t size_;
+};
+
+// Opens an existing file read-only after checking that it exists and is HDF5
+// (or the FileImage of that path).
 class Reader {
  public:
   explicit Reader(std::string path);
@@ -178,6 +200,7 @@ class Reader {
   hsize_t checked_count(hid_t space, std::size_t element_bytes, const std::string& what,
                         std::vector<hsize_t>* dims = nullptr) const;
   std::optional<std::string> read_text_attr(hid_t attr, const std::string& what) const;
+  void open_image(const FileImage& image);
 
   std::string path_;
   std::uint64_t file_bytes_ = 0;

@@ -1,0 +1,9 @@
+// 3D fracture polygons as CSV (dl::read_fracture_csv).
+#include "dda/dl/import3d.hpp"
+#include "fuzz_support.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::string path = dda::fuzz::scratch_file(data, size, ".csv");
+  dda::fuzz::refuse_only_with_input_errors([&] { dda::dl::read_fracture_csv(path); });
+  return 0;
+}

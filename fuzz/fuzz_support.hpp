@@ -1,0 +1,50 @@
+#pragma once
+// What every fuzz target shares (docs/reliability.md, "Fuzzing").
+//
+// A reader may refuse an input only with dda's own InputError (the damaged-
+// file error h5::DamagedFile is one): that is the one sentence and exit 1 a
+// user sees. Anything else that escapes it — std::bad_alloc, an
+// out_of_range, an InternalError — and every sanitizer report is a finding,
+// so only InputError is caught here.
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <unistd.h>
+
+#include "dda/common/error.hpp"
+
+namespace dda::fuzz {
+
+// Runs `read` on one input, taking an InputError as the right answer to a
+// bad input.
+template <class Read>
+void refuse_only_with_input_errors(Read&& read) {
+  try {
+    read();
+  } catch (const InputError&) {
+  }
+}
+
+// The bytes as a string (text readers parse strings).
+inline std::string as_text(const std::uint8_t* data, std::size_t size) {
+  return std::string(reinterpret_cast<const char*>(data), size);
+}
+
+// Writes the bytes to a file of this process and returns its path, for the
+// readers that take a path (the file is rewritten for every input). The
+// name ends in `suffix` for readers that go by the extension.
+inline std::string scratch_file(const std::uint8_t* data, std::size_t size, const std::string& suffix) {
+  const char* tmp = std::getenv("TMPDIR");
+  const std::string path = std::string(tmp && *tmp ? tmp : "/tmp") + "/dda_fuzz_" +
+                           std::to_string(static_cast<long>(getpid())) + suffix;
+  std::FILE* f = std::fopen(path.c_str(), "wb");
+  if (!f || (size && std::fwrite(data, 1, size, f) != size) || std::fclose(f) != 0) {
+    std::perror(path.c_str());
+    std::abort();  // the machine, not the reader: stop rather than fuzz nothing
+  }
+  return path;
+}
+
+}  // namespace dda::fuzz
