@@ -2,25 +2,18 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 #include "dda/common/error.hpp"
+#include "dda/common/short_number.hpp"
 
 namespace dda {
 namespace {
-
-std::string number(double v) {
-  std::ostringstream s;
-  s.precision(3);
-  s << v;
-  return s.str();
-}
 
 // A round shift that brings the model's centre near the origin: the centre
 // to three significant digits.
 std::string shift_of(const double* centre, int dims) {
   std::string out = "(";
-  for (int k = 0; k < dims; ++k) out += (k ? ", " : "") + number(-centre[k]);
+  for (int k = 0; k < dims; ++k) out += (k ? ", " : "") + short_number(-centre[k]);
   return out + ")";
 }
 
@@ -39,12 +32,12 @@ void check(const std::vector<Point>& points, const std::string& source) {
   for (int k = 0; k < Dims; ++k) size2 += (hi[k] - lo[k]) * (hi[k] - lo[k]), centre[k] = 0.5 * (lo[k] + hi[k]);
   const double size = std::sqrt(size2);
   if (farthest > kFarthestCoordinate)
-    throw InputError(source + ": has coordinates up to " + number(farthest) + " m, beyond the " +
-                     number(kFarthestCoordinate) +
+    throw InputError(source + ": has coordinates up to " + short_number(farthest) + " m, beyond the " +
+                     short_number(kFarthestCoordinate) +
                      " m any model may reach (coordinates are metres); give them about a local origin near the model.");
   if (farthest > kFarthestInSizes * size)
-    throw InputError(source + ": lies up to " + number(farthest) + " m from the origin and is only " + number(size) +
-                     " m across; doubles there resolve " + number(farthest * 2.2e-16) +
+    throw InputError(source + ": lies up to " + short_number(farthest) + " m from the origin and is only " +
+                     short_number(size) + " m across; doubles there resolve " + short_number(farthest * 2.2e-16) +
                      " m, too coarse for its details; give its coordinates about a local origin near it (shift every "
                      "point by " +
                      shift_of(centre, Dims) + ").");

@@ -7,19 +7,9 @@
 #include <sstream>
 
 #include "dda/common/error.hpp"
+#include "dda/common/short_number.hpp"
 
 namespace dda::df {
-namespace {
-
-// Three digits: the sentence explains a choice, it is not the number used.
-std::string num(double v) {
-  std::ostringstream s;
-  s.precision(3);
-  s << v;
-  return s.str();
-}
-
-}  // namespace
 
 double p_wave_speed(double young, double poisson, double density, bool plane_stress) {
   const double m = plane_stress ? young / (1 - poisson * poisson)
@@ -37,12 +27,12 @@ TimeStepChoice default_time_step(std::vector<BlockCrossing> blocks, double loadi
   std::nth_element(blocks.begin(), mid, blocks.end(),
                    [&](const BlockCrossing& a, const BlockCrossing& b) { return crossing(a) < crossing(b); });
   const double t_block = crossing(*mid);
-  const std::string crossing_text = "a P wave (" + num(mid->speed) + " m/s) crosses the median block (" +
-                                    num(mid->size) + " m) in " + num(t_block) + " s";
+  const std::string crossing_text = "a P wave (" + short_number(mid->speed) + " m/s) crosses the median block (" +
+                                    short_number(mid->size) + " m) in " + short_number(t_block) + " s";
   TimeStepChoice c;
   if (loading_interval > 0 && loading_interval < t_block) {
     c.dt = loading_interval;
-    c.basis = "the loading's sample interval, " + num(loading_interval) + " s (" + crossing_text + ")";
+    c.basis = "the loading's sample interval, " + short_number(loading_interval) + " s (" + crossing_text + ")";
   } else {
     c.dt = t_block;
     c.basis = crossing_text;

@@ -68,19 +68,11 @@ try:
 except ImportError as exc:  # pragma: no cover - depends on the machine
     fail(f"needs numpy, h5py and matplotlib ({exc}); run it with /usr/bin/python3")
 
-from results_data import RESULTS_FORMATS  # noqa: E402 (needs numpy)
+from results_data import RESULTS_FORMATS, text  # noqa: E402 (needs numpy)
 from results_quantities import STRESS_2D, STRESS_CHOICES  # noqa: E402
 
 
 # ----------------------------------------------------------------- reading
-
-
-def text(value):
-    if isinstance(value, bytes):
-        return value.decode("utf-8", errors="replace")
-    if isinstance(value, np.ndarray) and value.shape == ():
-        return text(value[()])
-    return str(value)
 
 
 class Model:
