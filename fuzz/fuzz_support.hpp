@@ -35,10 +35,17 @@ inline std::string as_text(const std::uint8_t* data, std::size_t size) {
 // Writes the bytes to a file of this process and returns its path, for the
 // readers that take a path (the file is rewritten for every input). The
 // name ends in `suffix` for readers that go by the extension.
+// The file is removed when the process ends normally (libFuzzer ends a run
+// with exit()).
 inline std::string scratch_file(const std::uint8_t* data, std::size_t size, const std::string& suffix) {
+  struct RemovedAtExit {
+    std::string path;
+    ~RemovedAtExit() { std::remove(path.c_str()); }
+  };
   const char* tmp = std::getenv("TMPDIR");
-  const std::string path = std::string(tmp && *tmp ? tmp : "/tmp") + "/dda_fuzz_" +
-                           std::to_string(static_cast<long>(getpid())) + suffix;
+  static const RemovedAtExit scratch{std::string(tmp && *tmp ? tmp : "/tmp") + "/dda_fuzz_" +
+                                     std::to_string(static_cast<long>(getpid())) + suffix};
+  const std::string& path = scratch.path;
   std::FILE* f = std::fopen(path.c_str(), "wb");
   if (!f || (size && std::fwrite(data, 1, size, f) != size) || std::fclose(f) != 0) {
     std::perror(path.c_str());
