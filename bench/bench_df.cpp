@@ -54,6 +54,7 @@
 #include <memory>
 #include <sstream>
 
+#include "dda/common/block_shape.hpp"
 #include "dda/common/memory_policy.hpp"
 #include "dda/common/model_io.hpp"
 #include "dda/common/yaml_reader.hpp"
@@ -68,19 +69,7 @@ namespace {
 
 using dda::Vec2;
 using namespace dda::df;
-
-dda::Block make_block(const dda::Polygon2& vertices) {
-  dda::Block b;
-  b.vertices = vertices;
-  b.edge_set.assign(vertices.size(), 0);
-  const dda::PolygonMoments m = dda::polygon_moments(vertices);
-  b.area = m.area;
-  b.centroid = m.centroid;
-  b.sxx = m.sxx;
-  b.syy = m.syy;
-  b.sxy = m.sxy;
-  return b;
-}
+using dda::make_block;
 
 dda::Polygon2 rectangle(double x0, double y0, double w, double h) {
   return {{x0, y0}, {x0 + w, y0}, {x0 + w, y0 + h}, {x0, y0 + h}};

@@ -1,6 +1,7 @@
 // DDA for Windows analysis files, .ana (df::import_ana), read against the
 // blocks `dda dl` + `dda dc` make of tests/data/df_pushblock.geo: a base and
 // a block on it, with the geometry's fixed, load and measured points.
+#include "dda/common/block_shape.hpp"
 #include "dda/common/geometry.hpp"
 #include "dda/df/import_ana.hpp"
 #include "fuzz_support.hpp"
@@ -8,16 +9,7 @@
 namespace {
 
 dda::Block rectangle_block(double x0, double y0, double w, double h, int set) {
-  dda::Block b;
-  b.vertices = {{x0, y0}, {x0 + w, y0}, {x0 + w, y0 + h}, {x0, y0 + h}};
-  b.edge_set.assign(4, set);
-  const dda::PolygonMoments m = dda::polygon_moments(b.vertices);
-  b.area = m.area;
-  b.centroid = m.centroid;
-  b.sxx = m.sxx;
-  b.syy = m.syy;
-  b.sxy = m.sxy;
-  return b;
+  return dda::make_block({{x0, y0}, {x0 + w, y0}, {x0 + w, y0 + h}, {x0, y0 + h}}, set);
 }
 
 dda::BlockModel pushblock_blocks() {

@@ -4,10 +4,14 @@
 #include <string>
 
 #include "dda/common/block_model.hpp"
+#include "dda/common/block_shape.hpp"
 #include "dda/common/geometry.hpp"
 #include "dda/df/model.hpp"
 
 namespace dda::df::test {
+
+// The tests' blocks are made as the benchmarks' are (dda/common/block_shape.hpp).
+using dda::make_block;
 
 inline Polygon2 rectangle(double x0, double y0, double w, double h) {
   return {{x0, y0}, {x0 + w, y0}, {x0 + w, y0 + h}, {x0, y0 + h}};
@@ -22,20 +26,6 @@ inline Polygon2 rotated(const Polygon2& poly, double angle) {
   Polygon2 out;
   for (const Vec2& p : poly) out.push_back(rotated(p, angle));
   return out;
-}
-
-// A block with its integrals filled in; every edge carries joint set `set`.
-inline Block make_block(const Polygon2& vertices, int set = 0) {
-  Block b;
-  b.vertices = vertices;
-  b.edge_set.assign(vertices.size(), set);
-  const PolygonMoments m = polygon_moments(vertices);
-  b.area = m.area;
-  b.centroid = m.centroid;
-  b.sxx = m.sxx;
-  b.syy = m.syy;
-  b.sxy = m.sxy;
-  return b;
 }
 
 inline Material rock(double density = 2000, double young = 1e9) {
