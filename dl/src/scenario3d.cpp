@@ -1,13 +1,13 @@
 // DL in 3D: the sections in order, and the readers they share.
 #include "dda/dl/scenario3d.hpp"
 
-#include <cctype>
 #include <sstream>
 
 #include "builder.hpp"  // detail::format_number
 #include "dda/common/coordinate_range.hpp"
 #include "dda/common/provenance.hpp"
 #include "dda/common/scenario.hpp"
+#include "dda/common/sentence_tail.hpp"
 #include "scenario3d_builder.hpp"
 
 namespace dda::dl {
@@ -58,11 +58,7 @@ std::string read_name(const YamlNode& node, const char* prefix, std::size_t inde
 void fail_from(const YamlNode& node, const std::string& key, const std::string& prefix, const InputError& e) {
   // The library's sentence becomes a clause: no capital (unless it starts an
   // acronym such as P32), no full stop; fail_key adds the one full stop.
-  std::string s = e.what();
-  if (!s.empty() && s.back() == '.') s.pop_back();
-  if (s.size() > 1 && std::isupper(static_cast<unsigned char>(s[0])) && std::islower(static_cast<unsigned char>(s[1])))
-    s[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(s[0])));
-  node.fail_key(key, prefix + ": " + s);
+  node.fail_key(key, prefix + ": " + with_lowered_start(sentence_tail(e)));
 }
 
 std::string point_text(const Vec3& p) {

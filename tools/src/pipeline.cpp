@@ -103,15 +103,6 @@ void warn_of_lost_area(const BlockModel& blocks) {
   std::cerr << s.str();
 }
 
-std::string continuing(const std::string& sentence) {
-  // "The domain ..." -> "the domain ..."; an acronym ("STL ...") keeps its
-  // capitals.
-  std::string s = sentence;
-  if (s.size() > 1 && std::isupper(static_cast<unsigned char>(s[0])) && !std::isupper(static_cast<unsigned char>(s[1])))
-    s[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(s[0])));
-  return s;
-}
-
 void make_dir(const std::filesystem::path& dir) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);

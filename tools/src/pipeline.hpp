@@ -10,6 +10,7 @@
 #include "dda/common/block_model.hpp"
 #include "dda/common/error.hpp"
 #include "dda/common/line_model.hpp"
+#include "dda/common/sentence_tail.hpp"
 #include "dda/dc/cut.hpp"
 #include "dda/dl/scenario3d.hpp"
 
@@ -63,13 +64,12 @@ void warn_of_lost_area(const BlockModel& blocks);
 // Runs fn; an input error it throws is said again after the name of the file
 // it came from ("l.h5: the domain polygon has no area ..."): the cutters see
 // models, not files.
-std::string continuing(const std::string& sentence);
 template <class Fn>
 auto naming_input(const std::string& file, Fn&& fn) -> decltype(fn()) {
   try {
     return fn();
   } catch (const InputError& e) {
-    throw InputError(file + ": " + continuing(e.what()));
+    throw InputError(file + ": " + with_lowered_start(e.what()));
   }
 }
 
