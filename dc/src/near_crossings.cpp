@@ -228,6 +228,8 @@ NearCrossings merge_near_crossings(PreparedInput& in) {
     }
   }
 
+  if (out.merged == 0) return out;  // nothing crowds: the segments stay as they are
+
   // 4. Every segment with stops is cut into pieces through them. A stop
   // within a snap length of an end moves that end instead. Each piece gets
   // an origin of its own (a copy, with the direction of the piece), so the
