@@ -42,10 +42,14 @@ struct Job {
   df::Results results;
   df::DfScenario scenario;
   OutputOptions output;
+  std::string input_files;  // what an error of the model is said after
 };
 
 void execute(Job& job, const DfStage& stage, std::optional<df::SimulationState> resume_from) {
-  df::Simulation sim(df::build_model(job.scenario.input));
+  // A YAML scenario's model was checked as it was read; what an .ana's
+  // model still refuses (a fixed point of the .geo outside every block) is
+  // a problem of its two files, and says which.
+  df::Simulation sim(naming_input(job.input_files, [&] { return df::build_model(job.scenario.input); }));
   if (resume_from) sim.restore(*resume_from);
   run_session(sim, job.results, job.output, stage,
               [](const df::Simulation& s, const std::string& blocks, const std::string& contacts) {
@@ -58,6 +62,7 @@ Job job_from_scenario(const YamlNode& root, const BlockModel& blocks, const std:
   Job job;
   job.scenario = df::read_df_scenario(root, blocks, blocks_path);
   job.output = parse_output_options(root);
+  job.input_files = root.file();
   df::Results& r = job.results;
   r.source = scenario_source(root, blocks.provenance.seed, blocks_path);
   r.blocks = blocks;
@@ -73,9 +78,7 @@ Job job_from_ana(const std::string& text, const std::string& label, const BlockM
   if (!quiet)
     for (const std::string& w : imp.warnings) std::cerr << "dda: note: " << w << "\n";
   job.scenario = std::move(imp.scenario);
-  // What the model still refuses (a fixed point of the .geo outside every
-  // block) is a problem of these two files; say which.
-  naming_input(label + " with " + blocks_path, [&] { return df::build_model(job.scenario.input); });
+  job.input_files = label + " with " + blocks_path;
   df::Results& r = job.results;
   r.source.provenance.scenario_path = label;
   r.source.provenance.scenario_text = text;
