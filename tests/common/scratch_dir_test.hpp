@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "dda/common/error.hpp"
+#include "input_error_of.hpp"
 
 namespace dda::testing {
 
@@ -36,17 +37,10 @@ class ScratchDirTest : public ::testing::Test {
     std::sort(names.begin(), names.end());
     return names;
   }
-  // Runs f, expects an InputError and returns its message ("" and a
-  // failure if none is thrown).
+  // The message of the InputError f throws (input_error_of.hpp).
   template <class F>
   static std::string error_of(F&& f) {
-    try {
-      f();
-    } catch (const dda::InputError& e) {
-      return e.what();
-    }
-    ADD_FAILURE() << "expected an InputError";
-    return "";
+    return input_error_of(std::forward<F>(f));
   }
 
   std::filesystem::path dir_;

@@ -6,8 +6,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <utility>
 
 #include "dda/common/error.hpp"
+#include "input_error_of.hpp"
 
 namespace {
 
@@ -18,13 +21,7 @@ std::string data(const std::string& name) { return std::string(DDA_TEST_DATA_DIR
 
 template <class F>
 std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const dda::InputError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "expected an InputError";
-  return "";
+  return dda::testing::input_error_of(std::forward<F>(f));
 }
 
 TEST(TriangleMesh, AsciiAndBinaryStlGiveTheSameMesh) {

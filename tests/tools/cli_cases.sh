@@ -284,23 +284,16 @@ case_geometry_errors_name_their_file() {
   # box (whose area is no finite number) are refused where they are read,
   # naming the scenario; before, the first was said to have "no area" and
   # the second was cut into a blocks file its own reader refused.
-  cat > far.yaml <<'YAML'
-name: far
-domain: {polygon: [[1e12, 1e12], [1.00000000001e12, 1e12], [1.00000000001e12, 1.00000000001e12], [1e12, 1.00000000001e12]]}
-YAML
-  expect_error 1 "^dda: far\.yaml: has coordinates up to 1e\+12 m, beyond the 1e\+09 m any model may reach" -- \
-    "$DDA" dl far.yaml -o l.h5 -q
-  cat > near.yaml <<'YAML'
-name: near
-domain: {polygon: [[5e8, 5e8], [500000010, 5e8], [500000010, 500000010], [5e8, 500000010]]}
-YAML
-  expect_error 1 "^dda: near\.yaml: lies up to 5e\+08 m from the origin and is only 14\.1 m across; .*shift every point by \(-5e\+08, -5e\+08\)\)\.$" -- \
-    "$DDA" dl near.yaml -o l.h5 -q
-  cat > huge.yaml <<'YAML'
-name: huge
-domain: {polygon: [[0, 0], [1e300, 0], [1e300, 1e300], [0, 1e300]]}
-YAML
-  expect_error 1 "^dda: huge\.yaml: has coordinates up to 1e\+300 m" -- "$DDA" dl huge.yaml -o l.h5 -q
+  # refused NAME POLYGON PATTERN: dda dl refuses NAME.yaml, a domain alone.
+  refused() {
+    printf 'name: %s\ndomain: {polygon: %s}\n' "$1" "$2" > "$1.yaml"
+    expect_error 1 "$3" -- "$DDA" dl "$1.yaml" -o l.h5 -q
+  }
+  refused far "[[1e12, 1e12], [1.00000000001e12, 1e12], [1.00000000001e12, 1.00000000001e12], [1e12, 1.00000000001e12]]" \
+    "^dda: far\.yaml: has coordinates up to 1e\+12 m, beyond the 1e\+09 m any model may reach"
+  refused near "[[5e8, 5e8], [500000010, 5e8], [500000010, 500000010], [5e8, 500000010]]" \
+    "^dda: near\.yaml: lies up to 5e\+08 m from the origin and is only 14\.1 m across; .*shift every point by \(-5e\+08, -5e\+08\)\)\.$"
+  refused huge "[[0, 0], [1e300, 0], [1e300, 1e300], [0, 1e300]]" "^dda: huge\.yaml: has coordinates up to 1e\+300 m"
   [ ! -e l.h5 ] || fail "a lines file was written"
   # A measurement point inside the tunnel: the cutter finds it in no block,
   # and says which file it came from (the lines file for dc, the scenario
