@@ -152,7 +152,14 @@ std::vector<Contact3> contacts_of_pair(const std::vector<Polyhedron>& blocks,
     home->candidates.push_back(c);
     home->preferred.push_back(cand.preferred);
   }
+  // Closed contacts are matched first: where a group could continue
+  // several previous contacts (an open corner in front of a free face
+  // within `merge` of the edge crossing that bears the load), the one that
+  // carries force keeps its state and plane; losing it dropped the last
+  // support of a wedge's corner and let the wedge roll on its line of
+  // intersection. An open contact has no spring state to lose.
   struct Match {
+    int open;  // 1: the previous contact is open
     double distance;
     size_t group, old;
   };
@@ -160,10 +167,11 @@ std::vector<Contact3> contacts_of_pair(const std::vector<Polyhedron>& blocks,
   for (size_t g = 0; g < groups.size(); ++g)
     for (size_t o = 0; o < previous_of_pair.size(); ++o) {
       const double dist = distance_to(groups[g], previous_of_pair[o]->point_now);
-      if (dist <= merge) matches.push_back({dist, g, o});
+      if (dist <= merge)
+        matches.push_back({previous_of_pair[o]->state == ContactState3::Open ? 1 : 0, dist, g, o});
     }
   std::sort(matches.begin(), matches.end(), [](const Match& x, const Match& y) {
-    return std::tie(x.distance, x.group, x.old) < std::tie(y.distance, y.group, y.old);
+    return std::tie(x.open, x.distance, x.group, x.old) < std::tie(y.open, y.distance, y.group, y.old);
   });
   std::vector<bool> old_done(previous_of_pair.size(), false);
   for (const Match& m : matches) {
@@ -361,7 +369,8 @@ ContactState3 update_contact3(Contact3& c, const Model3& m, const df::FrictionLa
   // The friction direction stays fixed within the step: when the block is
   // nearly stuck the iterate's slip is a tiny residual whose direction
   // swings from one iterate to the next (following it diverged in a test).
-  // finish_step turns it to the step's slip. The strength is iterated to
+  // finish_step turns it after the step, as the shear spring's return onto
+  // the friction limit would. The strength is iterated to
   // agree with the normal force and slip speed it produces (as in 2D).
   const double floor = 1e-10 * pn;  // the force of a 1e-10 m penetration
   if (std::abs(c.strength - friction_used) > 1e-3 * c.strength + floor) settled = false;
