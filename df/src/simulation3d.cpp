@@ -439,9 +439,17 @@ void Simulation3::finish_step(const std::vector<Vector12d>& d, double dt) {
     // Shear anchors ride on block j (before its centroid moves).
     c.ref_j = move_point(old_centroid[c.j], d[c.j], c.ref_j);
     c.point_now = move_point(old_centroid[c.i], d[c.i], c.geo.point_i);
-    // A contact still sliding forwards slides on along this step's slip.
-    if (c.state == ContactState3::Sliding && c.slip.dot(c.slip_dir) > model_.tolerance)
-      c.slip_dir = c.slip.normalized();
+    // A sliding contact's friction turns as its shear spring would: the
+    // spring, stretched by strength / ps along the old direction, is pulled
+    // further by the step's slip and returned onto the friction limit
+    // (docs/solver3d.md, "Friction at its limit"). A slip much longer than
+    // that stretch turns the friction fully along the slip; a creep of a
+    // few nanometres, the elastic spreading of a block resting at its limit
+    // or round-off, barely turns it.
+    if (c.state == ContactState3::Sliding) {
+      const Eigen::Vector2d stretched = c.slip_dir * (c.strength / model_.shear_penalty) + c.slip;
+      if (stretched.squaredNorm() > 0) c.slip_dir = stretched.normalized();
+    }
     // The law's memory over the accepted step (as the 2D solver); the
     // joint's own law, also while settling with the contacts stuck.
     df::FrictionInput in = friction_input3(c, dt);

@@ -28,11 +28,15 @@ namespace {
 
 constexpr double kG = 9.81;
 constexpr double kPi = std::numbers::pi;
-// N/m per contact point, normal and shear. The error against the rigid
-// block comes from the contact springs: every stop leaves the cube ringing
-// on them (undamped), which starts the next slide early. Measured at dt =
-// 1 ms: 2.2 % at 1e9, 1.15 % at 1e10, 0.46 % at 1e11 (dt = 0.5 ms at 1e9:
-// 1.4 %). 1e11 is 4e3 x the cube's weight per metre.
+// N/m per contact point, normal and shear; 4e3 x the cube's weight per
+// metre. The error against the rigid block (final |D|, loading mode) is
+// not the penalty's: 0.69 % at 1e10, 0.51 % at 1e11 and 0.62 % at 1e12
+// with dt = 1 ms, and 0.50, 0.83 and 0.74 % with dt = 0.25 ms. Sliding
+// contacts turn their friction as their shear springs do (docs/solver3d.md,
+// "Friction at its limit"); when it followed every slip, the corners'
+// sideways slips (the cube spreads and shrinks as the shaking changes its
+// normal load) turned it across the slope and the softer penalty, whose
+// corners slip further, was 1.25 % long.
 constexpr double kPenalty = 1e11;
 
 // b(t) / g of the two cases.
@@ -135,13 +139,13 @@ TEST(Simulation3Earthquake, OneHorizontalComponentLoadingModeV3) {
   EXPECT_NEAR(expected.back().z(), -0.424, 0.005);
   const Trajectory got = dda(body_one, t_end, "loading");
   compare("V3-3D loading", got, expected);
-  // Convergence with the penalty: ten times softer, about twice the error.
+  // A ten times softer penalty stays as close (measured 0.69 %, and 0.51 %
+  // at 1e11; see kPenalty): within 1 %, half the bound above.
   const Vec3 soft = dda(body_one, t_end, "loading", kPenalty / 10).back();
-  const Vec3 stiff = got.back();
   std::printf("V3-3D loading, error at penalty 1e10: %.2f %%, 1e11: %.2f %%\n",
               100 * (soft - expected.back()).norm() / expected.back().norm(),
-              100 * (stiff - expected.back()).norm() / expected.back().norm());
-  EXPECT_LT((stiff - expected.back()).norm(), 0.6 * (soft - expected.back()).norm());
+              100 * (got.back() - expected.back()).norm() / expected.back().norm());
+  EXPECT_LT((soft - expected.back()).norm(), 0.01 * expected.back().norm());
 }
 
 TEST(Simulation3Earthquake, OneHorizontalComponentDisplacementModeV3) {

@@ -40,6 +40,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <string>
 
 #include "dda/common/error.hpp"
 #include "dda/analysis/sliding3d.hpp"
@@ -318,23 +319,24 @@ TEST(Simulation3Wedge, RestoredStateContinuesExactly) {
 
 // The shaking-table test of the seed report (chapter 2) on the V4 wedge:
 // the table moves north-south at 2 Hz, ramped up over 5 s, 10 s in all.
-// Expected: the 3D analytical double-face solution (`dda sliding3d`, run
-// here with dt = 1e-4); DDA in both input modes within 5 % of it
-// (measured: -2.4 % loading, -4.0 % displacement mode). The stick-slip
-// sequence is sensitive to round-off: recomputing the moving foundation's
-// centroid from its vertices instead of translating it moved the
-// displacement-mode result from -2.7 % to -4.0 %, so the bound leaves room
-// for another machine's BLAS; a softer penalty (1e10) is +7 %.
-//
 // Amplitude 0.30 g, 45 % above the rigid yield acceleration 0.2074 g
-// (docs/validation.md): 122.65 mm along the line. Near the yield acceleration the
-// comparison measures something else: DDA's wedge rests on eight elastic
-// point contacts whose locked shear springs also carry force across the
-// line of intersection, so its normal forces at rest are not the limit-
-// equilibrium 0.629 W (0.60 and 0.58 W here) and slip starts at a lower
-// acceleration than the rigid wedge's. At 0.22 g (the seed's 6 % margin)
-// DDA slides 5.9 mm against 2.66 mm; at 0.18 g, below the rigid yield,
-// 0.02-0.09 mm (docs/solver3d.md). Penalty 1e11.
+// (docs/validation.md). Expected: the 3D analytical double-face solution
+// (`dda sliding3d`, run here with dt = 1e-4), 122.65 mm along the line.
+//
+// The analysis is of a rigid wedge whose normal forces follow limit
+// equilibrium at every instant, friction along the line. DDA's wedge rests
+// on point contacts with shear springs, and while it sticks the springs
+// across the line carry part of the load: when the shaking lifts the wedge
+// off its planes, the normal forces fall by pn / (pn + ps) of the rigid
+// analysis' fall (the planes are 90.5 deg apart), the wedge holds longer and
+// each slide starts later (docs/solver3d.md, "Near the yield acceleration").
+// Once sliding, DDA's wedge follows the analysis' acceleration: the run at
+// ps = pn slides 11 % less, every slide starting 9 ms late. So the check is
+// made with the shear springs a tenth of the normal ones, where the falls
+// differ by 9 %: DDA within 5 % of the analysis in both input modes
+// (measured -3.0 % loading, -3.2 % displacement). At ps = pn (loading
+// mode) the wedge must slide less than that, by the late starts: measured
+// -11.0 %, bounded here by 15 %.
 TEST(Simulation3Wedge, ShakingTableMatchesTheAnalyticalSolutionV4) {
   const double t_end = 10, amplitude = 0.30 * kG, omega = 2 * std::numbers::pi * 2, ramp = 5;
   auto ground = [&](double t) { return Vec3(0, amplitude * std::sin(omega * t) * std::min(t / ramp, 1.0), 0); };
@@ -352,8 +354,9 @@ TEST(Simulation3Wedge, ShakingTableMatchesTheAnalyticalSolutionV4) {
   std::vector<Vec3> a;
   for (int k = 0; k <= 10000; ++k) t.push_back(k * 1e-3), a.push_back(ground(k * 1e-3));
   const auto motion = std::make_shared<GroundMotion3>(t, a);
-  for (const char* mode : {"loading", "displacement"}) {
+  auto slide = [&](const char* mode, double shear_ratio) {
     WedgeModel w = build(30, 1e11, Layout::SharedCorners);
+    w.model.shear_penalty = shear_ratio * w.model.normal_penalty;
     w.model.earthquake = {motion, make_ground_input_mode3(mode)};
     Simulation3 sim(w.model);
     const auto k = static_cast<std::size_t>(w.wedge);
@@ -363,13 +366,23 @@ TEST(Simulation3Wedge, ShakingTableMatchesTheAnalyticalSolutionV4) {
     const double dt = 1e-3;
     for (int s = 0; s < std::lround(t_end / dt); ++s) unconverged += sim.step(dt).converged ? 0 : 1;
     const Vec3 u = (sim.blocks()[k].centroid - c0) - (sim.blocks()[base].centroid - b0);
-    std::printf("V4 shaking table, %s mode: %.4f mm along the line (analytical %.4f mm), %.2f %%, off-line %.2e m\n",
-                mode, 1e3 * u.dot(line), 1e3 * expected, 100 * (u.dot(line) - expected) / expected,
+    std::printf("V4 shaking table, %s mode, ps = %g pn: %.4f mm along the line (analytical %.4f mm), %.2f %%, "
+                "off-line %.2e m\n",
+                mode, shear_ratio, 1e3 * u.dot(line), 1e3 * expected, 100 * (u.dot(line) - expected) / expected,
                 (u - u.dot(line) * line).norm());
-    EXPECT_NEAR(u.dot(line), expected, 0.05 * expected) << mode;
     EXPECT_LT((u - u.dot(line) * line).norm(), 0.01 * expected) << mode;
     EXPECT_EQ(unconverged, 0) << mode;
+    return u.dot(line);
+  };
+  double loading = 0;
+  for (const char* mode : {"loading", "displacement"}) {
+    const double s = slide(mode, 0.1);
+    EXPECT_NEAR(s, expected, 0.05 * expected) << mode;
+    if (std::string(mode) == "loading") loading = s;
   }
+  const double stiff_shear = slide("loading", 1.0);
+  EXPECT_LT(stiff_shear, loading);
+  EXPECT_NEAR(stiff_shear, expected, 0.15 * expected);
 }
 
 }  // namespace

@@ -120,7 +120,7 @@ struct Contact3 {
   ContactGeometry3 geo;            // at the start of the current step
   Vec3 ref_j{0, 0, 0};             // shear-spring anchor on block j (world, moves with j)
   Vec3 point_now{0, 0, 0};         // P carried with block i to the end of the last step (identity, see detect_contacts3)
-  Eigen::Vector2d slip_dir{1, 0};  // sliding: unit slip of i relative to j on (t1, t2), fixed in a step
+  Eigen::Vector2d slip_dir{1, 0};  // sliding: unit direction on (t1, t2) that friction opposes, fixed in a step
   Eigen::Vector2d slip{0, 0};      // closed: slip of i relative to j in the last iterate (m)
   double normal_force = 0;         // N, compression positive (last iterate)
   Eigen::Vector2d shear_force{0, 0};  // N on i, (t1, t2), last iterate
