@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "dda/df/friction_laws.hpp"
 #include "dda/df/simulation.hpp"
 #include "spring_slider_model.hpp"
 #include "spring_slider_ode.hpp"
@@ -178,11 +179,11 @@ TEST(FrictionInstability, RateStateAboveCriticalStiffnessSlidesSteadily) {
 // steady sliding is stable above V_cr = v_s ln((mu_s - mu_k) / (mu_v v_s))
 // = 0.01 ln 10 = 0.023026 m/s.
 constexpr double kVs = 0.01, kMuV = 1.0, kStribeckK = 1e5;
-const double kVcr = kVs * std::log(0.1 / (kMuV * kVs));
-
 JointProperties stribeck_joint() {
   return law("stribeck", {{"mu_s", 0.6}, {"mu_k", 0.5}, {"v_s", kVs}, {"mu_v", kMuV}});
 }
+// 0.023026 m/s (test_friction_laws.cpp checks the formula by hand).
+const double kVcr = StribeckFriction(stribeck_joint()).critical_speed();
 double stribeck_mu(double v) { return 0.5 + 0.1 * std::exp(-v / kVs) + kMuV * v; }
 
 // The growth rate of the slider's oscillation about steady sliding at vd,
