@@ -133,11 +133,12 @@ TEST(FrictionInstability, RateStateBelowCriticalStiffnessSticksAndSlips) {
   // of the same equations (RK4, h = 10 us; h = 2 us gives the same to 1e-4).
   // Measured at dt = 0.1 ms: period 3.728 s against 3.929 (-5.1 %),
   // stress drop 0.0801 W against 0.0858 W (-6.6 %), peak speed 23.8 vd
-  // against 25.7 vd (-7.3 %). The step matters: at dt = 1 ms the period of
-  // the first cycle is 14 % short, at 0.3 ms 6 %, at 0.1 ms 3 %; steps
+  // against 25.7 vd (-7.3 %). The step matters (measured on the example's
+  // scenario when this test was written): at dt = 1 ms the period of the
+  // first cycle was 14 % short, at 0.3 ms 6 %, at 0.1 ms 3 %; steps
   // finer than 0.1 ms resolve the slider's rocking on its contact springs
   // (about 3e4 rad/s), which the friction then excites (at 25 us the events
-  // reach only 14 vd), so 0.1 ms is the step to use and 8 % / 10 % are the
+  // reached only 14 vd), so 0.1 ms is the step to use and 8 % / 10 % are the
   // tolerances that step supports (docs/friction.md, "Instabilities").
   const double k = 0.5 * kKc, u0 = 0.55 * kWeight / k, t_end = 10;
   const Cycles dda = cycles(dda_run(slider(rate_state_joint(), k, 1e-4, u0), kVd, t_end), 3 * kVd);
