@@ -5,7 +5,7 @@
 # of its law's stability limit, and a stability map of the rate-and-state
 # slider (load-point speed against stiffness) against Rice and Ruina's
 # boundary. Figures and a summary (analyse.py; exit status 1 if a run
-# disagrees with the theory it is set against). About a minute on two cores.
+# disagrees with the theory it is set against). About half a minute on two cores.
 # Environment: DDA (the program; default dda on PATH, else build/bin/dda), OUT (output folder;
 # default examples/friction_instabilities/out).
 set -euo pipefail
