@@ -1,6 +1,7 @@
 // Contact springs, friction forces and the open / sliding / locked decision.
 #include "dda/df/contact.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "dda/df/block_system.hpp"
@@ -105,6 +106,25 @@ void add_spring_force(BlockSystem& sys, int i, int j, double p, double s0, const
   sys.rhs(j) -= p * s0 * b;
 }
 
+// The normal spring of a closed contact over the step: N = -k (s0 + en.di +
+// gn.dj). The linear penalty is k = pn, s0 = dn0. Another normal law is
+// linearised about the penetration at the start of the step, g0 =
+// max(-dn0, 0): N = N(g0) + N'(g0) (g - g0) with g = -(dn0 + en.di + gn.dj),
+// i.e. k = N'(g0) and s0 = dn0 + g0 - N(g0) / k. It depends only on the
+// step's start, so the spring the iteration takes out of K is the one it put
+// in. Glued contacts (DC's cuts inside one piece of rock) keep pn.
+struct NormalSpring {
+  double k, s0;
+};
+NormalSpring normal_spring(const Contact& c, const ContactLaw& law) {
+  const double dn0 = c.geo.dn0;
+  if (!law.normal || law.normal->linear() || c.glued) return {law.pn, dn0};
+  const double g0 = std::max(-dn0, 0.0);
+  const double k = law.normal->stiffness(g0);
+  // k = 0 (a law soft at first touch, at g0 = 0) carries N(g0) = 0 this step.
+  return {k, k > 0 ? dn0 + g0 - law.normal->force(g0) / k : dn0};
+}
+
 FrictionInput friction_input(const Contact& c, double dt) {
   return {c.normal_force, c.slip_velocity, c.length, dt, c.bonded};
 }
@@ -115,9 +135,10 @@ void add_contact_springs(const Contact& c, const ContactLaw& law, double weight,
   if (c.state == ContactState::Open) return;
   const ContactGeometry& g = c.geo;
   if (c.state == ContactState::Locked) {
-    add_spring_pair_matrix(sys, c.vblock, c.eblock, weight * law.pn, g.en, g.gn, weight * law.ps, g.es(), g.gs());
+    add_spring_pair_matrix(sys, c.vblock, c.eblock, weight * normal_spring(c, law).k, g.en, g.gn, weight * law.ps,
+                           g.es(), g.gs());
   } else {
-    add_spring_matrix(sys, c.vblock, c.eblock, weight * law.pn, g.en, g.gn);
+    add_spring_matrix(sys, c.vblock, c.eblock, weight * normal_spring(c, law).k, g.en, g.gn);
   }
 }
 
@@ -129,7 +150,8 @@ double friction_force(const Contact& c, const ContactLaw& law, double dt) {
 void add_contact_forces(const Contact& c, const ContactLaw& law, double friction, double weight, BlockSystem& sys) {
   if (c.state == ContactState::Open) return;
   const ContactGeometry& g = c.geo;
-  add_spring_force(sys, c.vblock, c.eblock, weight * law.pn, g.dn0, g.en, g.gn);
+  const NormalSpring normal = normal_spring(c, law);
+  add_spring_force(sys, c.vblock, c.eblock, weight * normal.k, normal.s0, g.en, g.gn);
   if (c.state == ContactState::Locked) {
     add_spring_force(sys, c.vblock, c.eblock, weight * law.ps, g.ds0, g.es(), g.gs());
   } else {
@@ -156,7 +178,10 @@ void add_contact_terms(const Contact& c, const ContactLaw& law, double dt, Block
 ContactState update_contact(Contact& c, const ContactLaw& law, double dt, const Vector6d& di, const Vector6d& dj,
                             bool hold) {
   ContactGeometry& g = c.geo;
-  const double dn = g.dn0 + g.en.dot(di) + g.gn.dot(dj);
+  const double dn = g.dn0 + g.en.dot(di) + g.gn.dot(dj);  // the gap (penetration negative): decides closing
+  const NormalSpring spring = normal_spring(c, law);
+  // The spring's force; for the penalty (s0 = dn0) the very numbers of -pn dn.
+  const double n = -spring.k * (spring.s0 + g.en.dot(di) + g.gn.dot(dj));
   const ContactState old = c.state;
   const double friction_used =
       old == ContactState::Sliding ? law.friction->strength(friction_input(c, dt), c.friction) : 0.0;
@@ -184,7 +209,7 @@ ContactState update_contact(Contact& c, const ContactLaw& law, double dt, const 
   c.slip_velocity = 0;
 
   if (c.glued) {  // never opens, never slides: both springs stay on
-    c.normal_force = -law.pn * dn;
+    c.normal_force = n;
     c.shear_force = -law.ps * (g.ds0 + g.es().dot(di) + g.gs().dot(dj));
     if (old != ContactState::Locked) lock();
     return ContactState::Locked;
@@ -193,14 +218,13 @@ ContactState update_contact(Contact& c, const ContactLaw& law, double dt, const 
   const double eps = law.tolerance;
   if (old == ContactState::Open) {
     if (dn < -eps) {
-      c.normal_force = -law.pn * dn;
+      c.normal_force = n;
       return lock();
     }
     c.normal_force = 0;
     return ContactState::Open;
   }
 
-  const double n = -law.pn * dn;
   // A closed contact within the band keeps its spring (a pull of at most pn eps).
   const double tension_cap = (c.bonded ? law.tensile_strength * c.length : 0.0) + law.pn * eps;
   if (n < -tension_cap && !hold) {

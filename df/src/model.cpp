@@ -7,6 +7,7 @@
 
 #include "dda/common/error.hpp"
 #include "dda/df/friction.hpp"
+#include "dda/df/normal_law.hpp"
 #include "dda/df/time_step.hpp"
 
 namespace dda::df {
@@ -64,6 +65,7 @@ void check_joint(const JointProperties& j, const std::string& w) {
   require(!j.shear_penalty || (std::isfinite(*j.shear_penalty) && *j.shear_penalty > 0),
           w + " has a non-positive shear penalty.");
   make_friction_law(j);  // throws for an unknown law name
+  make_normal_law(j, 1.0);  // throws for an unknown law or a bad parameter
 }
 
 void check_control(const Control& c) {

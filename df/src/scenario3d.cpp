@@ -54,6 +54,8 @@ void check_joint3(const YamlNode& n) {
   for (const char* key : {"normal_penalty", "shear_penalty"})
     if (n.has(key))
       n.fail_key(key, std::string("is per joint set in 2D only; in 3D give control.") + key + " (every contact)");
+  if (n.has("normal_law") && !(n.child("normal_law").is_scalar() && n.child("normal_law").as_text() == "penalty"))
+    n.fail_key("normal_law", "is 2D only: the 3D contacts have the linear penalty spring (control.normal_penalty)");
 }
 
 df::JointsSection read_joints3(const YamlNode& root) {

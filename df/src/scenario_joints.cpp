@@ -6,6 +6,7 @@
 
 #include "dda/common/error.hpp"
 #include "dda/df/friction.hpp"
+#include "dda/df/normal_law.hpp"
 
 namespace dda::df {
 namespace {
@@ -34,6 +35,36 @@ void read_friction_law(const YamlNode& f, JointProperties& j) {
     if (f.has(w.key)) j.friction_options[w.key] = f.text(w.key);
 }
 
+// normal_law: a name, or {name: ..., <parameter>: value, ...}; a set that
+// names the base's law keeps its numbers, as for friction_law.
+void read_normal_law(const YamlNode& n, JointProperties& j, const JointProperties& base) {
+  const YamlNode f = n.child("normal_law");
+  const std::string name = f.is_map() ? f.text("name") : f.as_text();
+  const NormalLawEntry* law = find_normal_law(name);
+  if (!law) {
+    std::string known;
+    for (const NormalLawEntry& e : normal_laws()) known += (known.empty() ? "" : ", ") + e.name;
+    const std::string phrase = "must be a known normal law (" + known + "), got '" + name + "'";
+    if (f.is_map()) f.fail_key("name", phrase);
+    n.fail_key("normal_law", phrase);
+  }
+  j.normal_law = name;
+  if (!f.is_map()) {
+    if (name != base.normal_law) j.normal_parameters.clear();
+  } else {
+    std::vector<std::string> keys{"name"};
+    for (const NormalLawParameter& p : law->numbers) keys.push_back(p.key);
+    f.allow(keys);
+    j.normal_parameters.clear();
+    for (const NormalLawParameter& p : law->numbers) j.normal_parameters[p.key] = f.number(p.key, p.range);
+  }
+  try {
+    make_normal_law(j, 1.0);
+  } catch (const InputError& e) {
+    n.fail_key("normal_law", std::string("is not usable: ") + e.what());
+  }
+}
+
 JointProperties read_joint(const YamlNode& n, const JointProperties& base) {
   JointProperties j = base;
   j.friction_deg = n.number("friction_deg", base.friction_deg, Range::half_open(0, 90));
@@ -54,6 +85,7 @@ JointProperties read_joint(const YamlNode& n, const JointProperties& base) {
       if (j.friction_law != base.friction_law) j.friction_parameters.clear(), j.friction_options.clear();
     }
   }
+  if (n.has("normal_law")) read_normal_law(n, j, base);
   try {
     make_friction_law(j);
   } catch (const FrictionParameterError& e) {
@@ -68,8 +100,8 @@ JointProperties read_joint(const YamlNode& n, const JointProperties& base) {
 }  // namespace
 
 const std::vector<std::string>& joint_keys() {
-  static const std::vector<std::string> keys{"friction_deg",   "cohesion",      "tensile_strength",
-                                             "normal_penalty", "shear_penalty", "friction_law"};
+  static const std::vector<std::string> keys{"friction_deg",  "cohesion",     "tensile_strength", "normal_penalty",
+                                             "shear_penalty", "friction_law", "normal_law"};
   return keys;
 }
 

@@ -18,6 +18,8 @@ Simulation::Simulation(Model model, std::unique_ptr<LinearSolver> solver)
     : model_(std::move(model)), solver_(std::move(solver)) {
   if (!solver_) solver_ = make_solver(model_.control.solver);
   for (const JointProperties& j : model_.joints) friction_.push_back(make_friction_law(j));
+  for (std::size_t j = 0; j < model_.joints.size(); ++j)
+    normal_.push_back(make_normal_law(model_.joints[j], model_.joint_pn[j]));
   for (const Material& m : model_.materials) {
     emat_.push_back(elastic_matrix(m));
     // Once per material: a factorisation of E per block and step (to solve
@@ -62,7 +64,8 @@ void Simulation::run_until(double t) {
 
 ContactLaw Simulation::law_of(const Contact& c) const {
   return {model_.joint_pn[c.joint], model_.joint_ps[c.joint], model_.joints[c.joint].tensile_strength,
-          settling_stuck_ ? stuck_friction() : friction_[c.joint].get(), model_.contact_tolerance};
+          settling_stuck_ ? stuck_friction() : friction_[c.joint].get(), model_.contact_tolerance,
+          normal_[c.joint].get()};
 }
 
 int Simulation::joint_of(int vblock, int vertex, int eblock, int edge) const {

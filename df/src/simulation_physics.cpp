@@ -102,7 +102,7 @@ void Simulation::assemble_physics(double dt) {
 Simulation::ContactEnergy Simulation::contact_energy(const Contact& c, const Vector6d& di, const Vector6d& dj) const {
   ContactEnergy t;
   if (c.state == ContactState::Open) return t;
-  t.normal = c.normal_force * c.normal_force / (2 * model_.joint_pn[c.joint]);
+  t.normal = normal_[c.joint]->energy_at_force(c.normal_force);
   // The shear spring is elastic-perfectly plastic: a sliding contact keeps
   // it stretched by its friction force over ps (a contact that sticks again
   // starts from that stretch, update_contact), so it stores S^2 / 2 ps in

@@ -150,6 +150,20 @@ TEST(FrictionLaws, StribeckLimits) {
   EXPECT_NEAR(law.strength(at_speed(0, 1e-3, 1000), {}), 600, 1e-9);  // mu_s N
 }
 
+TEST(FrictionLaws, StribeckViscousBranch) {
+  // mu_v = 1 s/m: mu(0.1 m/s) = 0.5 + 0.1 e^-10 + 0.1 = 0.6000045; the
+  // slope mu_v - (mu_s - mu_k)/v_s e^(-V/v_s) vanishes at
+  // V_cr = 0.01 ln(0.1 / (1 x 0.01)) = 0.0230259 m/s (hand-computed).
+  const StribeckFriction law(joint("stribeck", {{"mu_s", 0.6}, {"mu_k", 0.5}, {"v_s", 1e-2}, {"mu_v", 1.0}}));
+  EXPECT_NEAR(law.mu(0.1), 0.5 + 0.1 * std::exp(-10.0) + 0.1, 1e-15);
+  EXPECT_NEAR(law.critical_speed(), 0.0230259, 1e-7);
+  const double h = 1e-7, v = law.critical_speed();
+  EXPECT_NEAR((law.mu(v + h) - law.mu(v - h)) / (2 * h), 0.0, 1e-6);
+  // Without the viscous branch the slope never turns: no stable speed.
+  const StribeckFriction plain(joint("stribeck", {{"mu_s", 0.6}, {"mu_k", 0.5}, {"v_s", 1e-2}}));
+  EXPECT_TRUE(std::isinf(plain.critical_speed()));
+}
+
 TEST(FrictionLaws, LogLinearIsFlooredAndNeverNegative) {
   // mu = 0.5 + s ln(V / 1e-3), floored at v_min = 1e-6.
   const LogLinearFriction weak(joint("log_linear", {{"mu_ref", 0.5}, {"s", -0.02}, {"v_ref", 1e-3}, {"v_min", 1e-6}}));

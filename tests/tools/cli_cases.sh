@@ -611,6 +611,32 @@ case_df_resume_friction_laws() {
     "$DDA" df bad.yaml --blocks out/blocks.h5 -o r.h5
 }
 
+# Oden-Martins normal compliance on the sliding interface (joints.<set>.normal_law):
+# friction acts on top of it, so the slider still slides 1/2 g (sin 30 -
+# cos 30 tan 20) t^2 = 0.9064 m down the 30 degree incline in 1 s
+# (hand-computed); a bad law number or name is one sentence naming the
+# file, line and key, and nothing is written.
+case_df_normal_law() {
+  write_incline
+  sed 's/  interface: {friction_deg: 20}/  interface: {friction_deg: 20, normal_law: {name: oden_martins, c_n: 1.0e13, m_n: 1.5}}/' \
+      incline.yaml > om.yaml
+  grep -q oden_martins om.yaml || fail "sed did not put the law in"
+  "$DDA" run om.yaml -o out -q --no-vtk || fail "run"
+  "$DDA" history out/results.h5 --csv --point slider > h.csv || fail "history"
+  /usr/bin/python3 -c "
+import csv, math
+r = list(csv.DictReader(open('h.csv')))[-1]
+s = math.hypot(float(r['slider.ux']), float(r['slider.uy']))
+assert abs(s - 0.9064) < 0.02 * 0.9064, s" || fail "the slider did not slide as friction on top of the normal law says"
+  sed 's/m_n: 1.5/m_n: 0.5/' om.yaml > bad.yaml
+  expect_error 1 "bad.yaml:[0-9]+: joints.interface.normal_law.m_n must be in \[1, 10\], got 0.5\.$" -- \
+    "$DDA" df bad.yaml --blocks out/blocks.h5 -o r.h5
+  sed 's/name: oden_martins/name: hertz/' om.yaml > bad.yaml
+  expect_error 1 "bad.yaml:[0-9]+: joints.interface.normal_law.name must be a known normal law \(penalty, oden_martins\), got 'hertz'\.$" -- \
+    "$DDA" df bad.yaml --blocks out/blocks.h5 -o r.h5
+  [ ! -e r.h5 ] || fail "a results file was written despite the errors"
+}
+
 # An incident wave through a viscous base (boundaries.viscous, earthquake mode
 # incident): a column of ten bonded 10 x 5 m beds shaken vertically (a P
 # wave; a free-standing column rocks under horizontal shaking) by a Hann

@@ -13,6 +13,7 @@
 // direction, and the opposite force on the edge at the projection of P1.
 #include "dda/df/block_kinematics.hpp"
 #include "dda/df/friction.hpp"
+#include "dda/df/normal_law.hpp"
 #include "dda/df/types.hpp"
 
 namespace dda::df {
@@ -105,6 +106,9 @@ struct ContactLaw {
   // without the band thousands of such contacts flip every iteration and the
   // step never settles. See Model::contact_tolerance.
   double tolerance = 0;
+  // The normal force against the penetration (normal_law.hpp); nullptr or
+  // a linear law: the spring pn.
+  const NormalLaw* normal = nullptr;
 };
 
 // Springs and friction forces of the contact in its current state.

@@ -57,17 +57,22 @@ class RateStateFriction final : public FrictionLaw {
   Evolution evolution_;
 };
 
-// Stribeck: mu = mu_k + (mu_s - mu_k) exp(-V / v_s). No memory.
+// Stribeck: mu = mu_k + (mu_s - mu_k) exp(-V / v_s) + mu_v V, the viscous
+// term (default 0) being the rising branch of the full Stribeck curve. No
+// memory.
 class StribeckFriction final : public FrictionLaw {
  public:
   explicit StribeckFriction(const JointProperties& joint);
   static FrictionLawSpec spec();
   std::string name() const override { return "stribeck"; }
   double mu(double v) const;
+  // The driving speed below which steady sliding is unstable (mu falls with
+  // V): v_s ln((mu_s - mu_k) / (mu_v v_s)), at least 0; infinite for mu_v = 0.
+  double critical_speed() const;
   double strength(const FrictionInput& in, const FrictionState& state) const override;
 
  private:
-  double mu_s_, mu_k_, v_s_, cohesion_;
+  double mu_s_, mu_k_, v_s_, mu_v_, cohesion_;
 };
 
 // Linear slip weakening: mu = mu_s - (mu_s - mu_d) min(D / Dc, 1), D the

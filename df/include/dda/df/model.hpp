@@ -39,6 +39,10 @@ struct JointProperties {
   // "aging"); each law checks them (friction_laws.hpp, docs/scenario.md).
   std::map<std::string, double> friction_parameters;
   std::map<std::string, std::string> friction_options;
+  // The contact's normal law (normal_law.hpp): "penalty" (the linear spring
+  // normal_penalty) or another law with its numbers by key.
+  std::string normal_law = "penalty";
+  std::map<std::string, double> normal_parameters;
 };
 
 // A piecewise-linear table of a 2D quantity against time: (t_k, x_k, y_k),

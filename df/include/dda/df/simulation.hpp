@@ -25,6 +25,7 @@
 #include "dda/df/contact.hpp"
 #include "dda/df/energy.hpp"
 #include "dda/df/friction.hpp"
+#include "dda/df/normal_law.hpp"
 #include "dda/df/linear_solver.hpp"
 #include "dda/df/model.hpp"
 #include "dda/df/moved_blocks.hpp"
@@ -255,6 +256,7 @@ class Simulation {
   Model model_;
   std::unique_ptr<LinearSolver> solver_;
   std::vector<std::unique_ptr<FrictionLaw>> friction_;  // one per joint
+  std::vector<std::unique_ptr<NormalLaw>> normal_;      // one per joint
   std::vector<Matrix3d> emat_;                          // one per material
   std::vector<Matrix3d> compliance_;                    // emat_^-1: strain energy density is s' C s / 2
   std::vector<BlockState> blocks_;
