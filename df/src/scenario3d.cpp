@@ -39,7 +39,7 @@ struct Parsed3 {
   df::RunLength run;
   int max_open_close = 10;
   std::string solver = "auto";
-  bool initial_equilibrium = false;
+  bool initial_equilibrium = Control3{}.initial_equilibrium;
   df::ViscousDamping damping;
   std::optional<double> normal_penalty, shear_penalty, contact_reach;
 };
@@ -136,7 +136,7 @@ void read_control3(const YamlNode& root, Parsed3& p) {
   if (c.has("shear_penalty")) p.shear_penalty = c.number("shear_penalty", Range::positive());
   if (c.has("contact_reach")) p.contact_reach = c.number("contact_reach", Range::positive());
   p.solver = c.choice("solver", {"auto", "cholmod", "pcg"}, "auto");
-  p.initial_equilibrium = c.flag("initial_equilibrium", false);
+  p.initial_equilibrium = c.flag("initial_equilibrium", Control3{}.initial_equilibrium);
   p.damping = df::read_damping(c);
 }
 

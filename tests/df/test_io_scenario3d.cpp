@@ -78,9 +78,9 @@ TEST(Scenario3d, BuildsTheModel) {
   EXPECT_EQ(resolve_output_schedule(s.output, m.control).interval, 0.5 / 20);
 }
 
-// control.initial_equilibrium is read in 3D as in 2D (off unless given).
+// control.initial_equilibrium is read in 3D as in 2D (on unless given).
 TEST(Scenario3d, ReadsInitialEquilibrium) {
-  EXPECT_FALSE(read(kScenario).model.control.initial_equilibrium);
+  EXPECT_TRUE(read(kScenario).model.control.initial_equilibrium);
   const std::string on = replaced(kScenario, "contact_reach: 0.02}", "contact_reach: 0.02, initial_equilibrium: true}");
   EXPECT_TRUE(read(on).model.control.initial_equilibrium);
   const std::string off = replaced(kScenario, "contact_reach: 0.02}", "contact_reach: 0.02, initial_equilibrium: false}");

@@ -131,6 +131,7 @@ WedgeModel build(double phi_deg, double penalty, Layout layout = Layout::LargerF
   m.normal_penalty = penalty;
   m.shear_penalty = penalty;
   m.gravity = {0, 0, -kG};
+  m.control.initial_equilibrium = false;  // gravity switched on at t = 0: what the expected numbers assume
   m.contact_reach = 0.01;  // > 2.5 x the largest step displacement (1.2 m/s * 1 ms)
   return w;
 }
