@@ -946,6 +946,11 @@ assert math.dist(u, v) < 1e-3 * math.hypot(*v), (u, v)   # one rigid block, up t
 print("centre at (%.7f, %.7f, %.7f), moved %.4f m" % (got + (math.hypot(*u),)))
 PY
   B=out/blocks3d.h5
+  # A resumed run places them again from the scenario it stored: the same run.
+  "$DDA" df s.yaml --blocks $B -o part.h5 --stop-at-step 300 -q || fail "df --stop-at-step"
+  "$DDA" df --resume part.h5 -q || fail "resume"
+  "$DDA" history part.h5 --csv > resumed.csv || fail "history of the resumed run"
+  cmp -s all.csv resumed.csv || fail "the resumed run differs from the uninterrupted one"
   sed 's/name: centre, block: {containing: \[5, 5, 4.5\]}/name: centre, block: {below: 10}/' s.yaml > e.yaml
   expect_error 1 "e.yaml:[0-9]+: points\[2\].block.below selects 2 blocks of $B \(0, 1\), but a point rides with one" -- \
     "$DDA" df e.yaml --blocks $B -o r.h5
