@@ -62,8 +62,8 @@ BlockPointSpec read_spec(const YamlNode& item, int dimension, const std::vector<
     try {
       s.id = b.as_integer(Range::non_negative());
     } catch (const InputError&) {
-      b.fail("must be a block id (a whole number >= 0, as `dda info` lists them) or a selection such as " + example +
-             ", got '" + b.as_text() + "'");
+      b.fail("must be a block id (a whole number >= 0: its index in the blocks file, its block_id in ParaView) or "
+             "a selection such as " + example + ", got '" + b.as_text() + "'");
     }
   } else if (b.is_map()) {
     b.allow(keys);

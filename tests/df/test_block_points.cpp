@@ -132,8 +132,8 @@ TEST(BlockPoints2d, EveryMistakeIsOneSentence) {
       {"{name: by_id, block: 1}", "{name: by_id, block: 2}",
        "s.yaml:7: points[0].block is block 2, but b.h5 has 2 blocks (ids 0 to 1)."},
       {"{name: by_id, block: 1}", "{name: by_id, block: slider}",
-       "s.yaml:7: points[0].block must be a block id (a whole number >= 0, as `dda info` lists them) or a selection "
-       "such as {containing: [x, y]}, got 'slider'."},
+       "s.yaml:7: points[0].block must be a block id (a whole number >= 0: its index in the blocks file, its "
+       "block_id in ParaView) or a selection such as {containing: [x, y]}, got 'slider'."},
       {"{name: by_id, block: 1}", "{name: by_id, block: {containing: [50, 50]}}",
        "s.yaml:7: points[0].block.containing puts (50, 50) outside every block of b.h5."},
       // On the joint between slider and slab: in both blocks, so in neither.
@@ -164,8 +164,8 @@ TEST(BlockPoints2d, EveryMistakeIsOneSentence) {
   EXPECT_EQ(input_error_of([&] {
               check_df_scenario(YamlNode::load_string(replaced(kScenario2d, "block: 1}", "block: -1}"), "s.yaml"));
             }),
-            "s.yaml:7: points[0].block must be a block id (a whole number >= 0, as `dda info` lists them) or a "
-            "selection such as {containing: [x, y]}, got '-1'.");
+            "s.yaml:7: points[0].block must be a block id (a whole number >= 0: its index in the blocks file, its "
+            "block_id in ParaView) or a selection such as {containing: [x, y]}, got '-1'.");
 }
 
 }  // namespace
