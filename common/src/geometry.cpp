@@ -73,6 +73,18 @@ bool point_in_polygon(const Polygon2& poly, const Vec2& p) {
   return inside;
 }
 
+double distance_to_boundary(const Polygon2& poly, const Vec2& p) {
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0, n = poly.size(); i < n; ++i) {
+    const Vec2& a = poly[i];
+    const Vec2 ab = poly[(i + 1) % n] - a;
+    const double l2 = ab.squaredNorm();
+    const double t = l2 > 0 ? std::clamp((p - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
+    best = std::min(best, (a + t * ab - p).norm());
+  }
+  return best;
+}
+
 void make_counter_clockwise(Polygon2& poly) {
   if (signed_area(poly) < 0) std::reverse(poly.begin(), poly.end());
 }

@@ -13,6 +13,7 @@
 #include "dda/df/ground_motion.hpp"
 #include "dda/df/time_step.hpp"
 #include "scenario3d_detail.hpp"
+#include "scenario_block_points.hpp"
 #include "scenario_control.hpp"
 #include "scenario_joints.hpp"
 #include "scenario_points.hpp"
@@ -180,8 +181,42 @@ double default_normal_penalty(const Model3& m) {
   return young * std::cbrt(count > 0 ? volume / count : 1.0);
 }
 
+// Point p lies inside (or on) every face plane of the convex block, within
+// `tolerance` (m).
+bool block_holds(const Polyhedron& poly, const Vec3& p, double tolerance) {
+  if (poly.faces.empty()) return false;
+  for (const PolyFace& f : poly.faces) {
+    if (f.vertices.empty()) continue;
+    const Vec3& on = poly.vertices[static_cast<std::size_t>(f.vertices.front())];
+    if (f.normal.dot(p - on) > tolerance) return false;
+  }
+  return true;
+}
+
+// The keys a point placed by block may select with besides an id and
+// `containing`: those of `fixed` but `blocks` (an id is `block: ID`).
+const std::vector<std::string> kPointSelectionKeys{"bodies", "below", "box", "outside", "removability"};
+
+// The measurement points `points` places on a block (scenario_block_points.hpp).
+void add_block_points(const YamlNode& root, const PolyhedronModel& blocks, const std::string& blocks_path,
+                      double tolerance, Model3& m) {
+  df::BlockCatalogue<Vec3> catalogue;
+  catalogue.path = blocks_path;
+  catalogue.count = blocks.blocks.size();
+  catalogue.centroid = [&](std::size_t b) { return blocks.blocks[b].centroid; };
+  catalogue.contains = [&](std::size_t b, const Vec3& p) { return block_holds(blocks.blocks[b], p, tolerance); };
+  catalogue.selection_keys = kPointSelectionKeys;
+  catalogue.select = [&](const YamlNode& n) {
+    return select_blocks(read_block_selection(n), n, blocks, blocks_path);
+  };
+  std::vector<std::string> taken;
+  for (const ModelPoint3& pt : blocks.points) taken.push_back(pt.name);
+  for (const df::BlockPoint<Vec3>& p : df::place_block_points(root, catalogue, taken))
+    m.measurements.push_back({p.name, p.block, p.position});
+}
+
 // Measurement, fixed and load points of the blocks file, each in the block
-// that holds it.
+// that holds it, then the measurement points the scenario places by block.
 void add_points(const Parsed3& p, const YamlNode& root, const PolyhedronModel& blocks, const std::string& blocks_path,
                 Model3& m) {
   const double tolerance = 1e-9 * reference_length(blocks.blocks);
@@ -250,6 +285,7 @@ void add_points(const Parsed3& p, const YamlNode& root, const PolyhedronModel& b
       m.fixed_points.push_back(fp);
     }
   }
+  add_block_points(root, blocks, blocks_path, tolerance, m);
 }
 
 }  // namespace
@@ -281,19 +317,8 @@ History3 read_history3(const YamlNode& n, const std::string& key) {
 }
 
 int block_containing(const std::vector<Polyhedron>& blocks, const Vec3& p, double tolerance) {
-  for (std::size_t b = 0; b < blocks.size(); ++b) {
-    const Polyhedron& poly = blocks[b];
-    bool inside = !poly.faces.empty();
-    for (const PolyFace& f : poly.faces) {
-      if (f.vertices.empty()) continue;
-      const Vec3& on = poly.vertices[static_cast<std::size_t>(f.vertices.front())];
-      if (f.normal.dot(p - on) > tolerance) {
-        inside = false;
-        break;
-      }
-    }
-    if (inside) return static_cast<int>(b);
-  }
+  for (std::size_t b = 0; b < blocks.size(); ++b)
+    if (block_holds(blocks[b], p, tolerance)) return static_cast<int>(b);
   return -1;
 }
 
@@ -302,6 +327,7 @@ void check_df3_scenario(const YamlNode& root) {
   if (!root.has("control"))
     root.fail_key("control", "is required for a forward run (the scenario has materials, joints, loading or fixed)");
   parse(root);
+  df::check_block_points(root, 3, kPointSelectionKeys, [](const YamlNode& n) { read_block_selection(n); });
 }
 
 DfScenario3 read_df3_scenario(const YamlNode& root, const PolyhedronModel& blocks, const std::string& blocks_path) {

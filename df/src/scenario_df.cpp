@@ -10,6 +10,7 @@
 #include "dda/common/error.hpp"
 #include "dda/df/scenario.hpp"
 #include "dda/df/time_step.hpp"
+#include "scenario_block_points.hpp"
 #include "scenario_earthquake.hpp"
 #include "scenario_control.hpp"
 #include "scenario_joints.hpp"
@@ -346,6 +347,29 @@ ViscousSides add_viscous_boundary(const BlockModel& blocks, const std::vector<st
   return by_side;
 }
 
+// The measurement points `points` places on a block
+// (scenario_block_points.hpp): by id or by the block containing a point.
+void add_block_points(const YamlNode& root, const BlockModel& blocks, const std::string& blocks_path,
+                      ModelInput& in) {
+  // A point on an edge, in rounding, is on it: 1e-9 of the model's size.
+  Vec2 lo = Vec2::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  for (const Block& b : blocks.blocks)
+    for (const Vec2& v : b.vertices) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+  const double tolerance = 1e-9 * (hi - lo).norm();
+  BlockCatalogue<Vec2> catalogue;
+  catalogue.path = blocks_path;
+  catalogue.count = blocks.blocks.size();
+  catalogue.centroid = [&](std::size_t b) { return blocks.blocks[b].centroid; };
+  catalogue.contains = [&](std::size_t b, const Vec2& p) {
+    const Polygon2& poly = blocks.blocks[b].vertices;
+    return point_in_polygon(poly, p) || distance_to_boundary(poly, p) <= tolerance;
+  };
+  std::vector<std::string> taken;
+  for (const LocatedPoint& lp : blocks.points) taken.push_back(lp.point.name);
+  for (const BlockPoint<Vec2>& p : place_block_points(root, catalogue, taken))
+    in.measurements.push_back({p.name, p.position, p.block});
+}
+
 }  // namespace
 
 bool scenario_has_df(const YamlNode& root) { return root.has("control"); }
@@ -355,6 +379,7 @@ void check_df_scenario(const YamlNode& root) {
   if (!root.has("control"))
     root.fail_key("control", "is required for a forward run (the scenario has materials, joints, loading or fixed)");
   parse(root);
+  check_block_points(root, 2, {}, [](const YamlNode&) {});
 }
 
 void check_blocks_for_df(const BlockModel& blocks, const std::string& blocks_path,
@@ -452,6 +477,7 @@ DfScenario read_df_scenario(const YamlNode& root, const BlockModel& blocks, cons
       root.fail_key("loading", "is required: load point '" + name + "' needs a force in loading.point_loads");
     }
   add_points_from_block_model(blocks, forces, in);
+  add_block_points(root, blocks, blocks_path, in);
   for (const Parsed::Load& l : p.loads)
     for (PointLoad& pl : in.loads)
       if (pl.name == l.point) pl.history = l.history;

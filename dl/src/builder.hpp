@@ -46,6 +46,11 @@ void read_points(const YamlNode& root, Builder& b);
 // and the report's count of points per kind (2D and 3D alike).
 PointKind read_point_kind(const YamlNode& n);
 nlohmann::json point_counts(const std::vector<PointKind>& kinds);
+// An item of `points` placed on a block (it has `block`): the forward run
+// places it on the blocks DC cuts (df/src/scenario_block_points.hpp), so
+// DL leaves it out of the lines; without `control` there is no forward run
+// to place it, which is an error naming the key.
+bool placed_by_block(const YamlNode& root, const YamlNode& item);
 // The `thickness` mapping of a layering section (2D and 3D alike).
 ThicknessSpec read_thickness(const YamlNode& n);
 // Per-set totals and overall totals, from the finished model.

@@ -47,22 +47,7 @@ bool segments_cross(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) 
   return o1 * o2 < 0 && o3 * o4 < 0;
 }
 
-double point_segment_distance(const Vec2& p, const Vec2& a, const Vec2& b) {
-  const Vec2 ab = b - a;
-  const double l2 = ab.squaredNorm();
-  double t = l2 > 0 ? (p - a).dot(ab) / l2 : 0.0;
-  t = std::clamp(t, 0.0, 1.0);
-  return (a + t * ab - p).norm();
-}
-
 }  // namespace
-
-double distance_to_boundary(const Polygon2& poly, const Vec2& p) {
-  double best = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < poly.size(); ++i)
-    best = std::min(best, point_segment_distance(p, poly[i], poly[(i + 1) % poly.size()]));
-  return best;
-}
 
 std::vector<Segment> clip_segment(const Polygon2& poly, const Segment& s, double min_length) {
   std::vector<Segment> out;

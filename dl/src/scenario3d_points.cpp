@@ -6,7 +6,8 @@ namespace dda::dl::detail {
 
 void read_points3(const YamlNode& root, Builder3& b) {
   for (const YamlNode& n : root.list_or_empty("points")) {
-    n.allow({"name", "kind", "at"});
+    n.allow({"name", "kind", "at", "block"});
+    if (placed_by_block(root, n)) continue;
     ModelPoint3 p;
     p.name = n.text("name");
     if (p.name.empty()) n.fail_key("name", "must not be empty");

@@ -5,7 +5,8 @@ namespace dda::dl::detail {
 
 void read_points(const YamlNode& root, Builder& b) {
   for (const YamlNode& n : root.list_or_empty("points")) {
-    n.allow({"name", "kind", "at"});
+    n.allow({"name", "kind", "at", "block"});
+    if (placed_by_block(root, n)) continue;
     ModelPoint p;
     p.name = n.text("name");
     if (p.name.empty()) n.fail_key("name", "must not be empty");
@@ -21,6 +22,14 @@ void read_points(const YamlNode& root, Builder& b) {
   std::vector<PointKind> kinds;
   for (const ModelPoint& p : b.model.points) kinds.push_back(p.kind);
   b.report["points"] = point_counts(kinds);
+}
+
+bool placed_by_block(const YamlNode& root, const YamlNode& item) {
+  if (!item.has("block")) return false;
+  if (!root.has("control"))
+    item.fail_key("block", "places a measurement point on a block, which only the forward run does, but the scenario "
+                           "has no control section: give the point's position in at instead");
+  return true;
 }
 
 PointKind read_point_kind(const YamlNode& n) {

@@ -879,6 +879,92 @@ PY
   true
 }
 
+# Measurement points by block (docs/scenario.md, "points"): a point placed
+# by the block containing a point of the slider, at the slider's centroid,
+# rides with it as the explicit point `slider` at its centre does; each
+# mistake is one sentence naming the key.
+case_df_points_by_block() {
+  write_incline
+  sed -i 's/^materials:/  - {name: centre, block: {containing: [5.5, 3.8]}}\nmaterials:/' incline.yaml
+  "$DDA" run incline.yaml -o out -q --no-vtk || fail "run"
+  "$DDA" history out/results.h5 --csv > all.csv || fail "history"
+  /usr/bin/python3 - <<'PY' || fail "the point by block does not ride with the slider"
+import csv, math
+rows = list(csv.DictReader(open("all.csv")))
+# The slider's centre (6.5, 0.5) in the slope frame, rotated 30 deg by hand;
+# the first row is after the start-up relaxation: x - ux is where it started.
+a = math.radians(30)
+centre = (6.5 * math.cos(a) - 0.5 * math.sin(a), 6.5 * math.sin(a) + 0.5 * math.cos(a))
+start = [float(rows[0]["centre." + c]) - float(rows[0]["centre.u" + c]) for c in "xy"]
+assert math.dist(start, centre) < 1e-9, (start, centre)
+for r in rows:
+    for c in ("ux", "uy", "vx", "vy"):
+        assert abs(float(r["centre." + c]) - float(r["slider." + c])) < 1e-9, (r["t"], c)
+print("centre moved %.4f m, as slider" % math.hypot(float(rows[-1]["centre.ux"]), float(rows[-1]["centre.uy"])))
+PY
+  B=out/blocks.h5
+  sed 's/block: {containing: \[5.5, 3.8\]}/block: 7/' incline.yaml > s.yaml
+  expect_error 1 "s.yaml:[0-9]+: points\[5\].block is block 7, but out/blocks.h5 has 2 blocks \(ids 0 to 1\)\.$" -- \
+    "$DDA" df s.yaml --blocks $B -o r.h5
+  sed 's/containing: \[5.5, 3.8\]/containing: [50, 50]/' incline.yaml > s.yaml
+  expect_error 1 "s.yaml:[0-9]+: points\[5\].block.containing puts \(50, 50\) outside every block of out/blocks.h5\.$" -- \
+    "$DDA" df s.yaml --blocks $B -o r.h5
+  sed 's/{name: centre, block/{name: centre, kind: load, block/' incline.yaml > s.yaml
+  expect_error 1 "s.yaml:[0-9]+: points\[5\].kind is 'load', but only a measurement point can be placed by block" -- \
+    "$DDA" run s.yaml -o out2
+  [ ! -e out2/lines.h5 ] || fail "DL ran although the point was wrong"
+  sed '/^control:/d' incline.yaml | sed '/^materials:/,/^  interface:/d' > nc.yaml
+  expect_error 1 "nc.yaml:[0-9]+: points\[5\].block places a measurement point on a block, which only the forward run does" -- \
+    "$DDA" dl nc.yaml -o l.h5
+  [ ! -e r.h5 ] && [ ! -e l.h5 ] || fail "an output was written despite the errors"
+}
+
+# The same in 3D, on the slider of df3_incline.yaml (x, y in [3.5, 6.5],
+# between the plane z = 3 - (x - 5) tan 20 and the top z = 6): its centroid
+# by hand is x = 5 + tan 20 / 4 = 5.0909925, y = 5, z = 4.5 - tan^2 20 / 8 =
+# 4.4834407 (the wedge of rock under x > 5 is thicker: integrate the
+# column height 3 + (x - 5) tan 20 over x).
+case_df3_points_by_block() {
+  cp "$SRC/tests/data/df3_incline.yaml" . || fail "copy the fixture"
+  sed 's/^materials:/  - {name: centre, block: {containing: [5, 5, 4.5]}}\n  - {name: same, block: {containing: [5, 5, 4.5]}, at: [5, 5, 4.5]}\nmaterials:/' \
+    df3_incline.yaml > s.yaml
+  "$DDA" run s.yaml -o out -q || fail "run"
+  "$DDA" history out/results.h5 --csv > all.csv || fail "history"
+  /usr/bin/python3 - <<'PY' || fail "the points by block are not where they should be or do not ride with the slider"
+import csv, math
+rows = list(csv.DictReader(open("all.csv")))
+t = math.tan(math.radians(20))
+expected = (5 + t / 4, 5, 4.5 - t * t / 8)
+got = tuple(float(rows[0]["centre." + c]) for c in "xyz")
+assert max(abs(g - e) for g, e in zip(got, expected)) < 1e-9, (got, expected)
+for r in rows:   # `same` is the explicit `slider`, placed by block
+    for c in ("x", "y", "z", "ux", "uy", "uz"):
+        assert r["same." + c] == r["slider." + c], (r["t"], c)
+u = [float(rows[-1]["centre.u" + c]) for c in "xyz"]
+v = [float(rows[-1]["slider.u" + c]) for c in "xyz"]
+assert math.dist(u, v) < 1e-3 * math.hypot(*v), (u, v)   # one rigid block, up to its small rotation
+print("centre at (%.7f, %.7f, %.7f), moved %.4f m" % (got + (math.hypot(*u),)))
+PY
+  B=out/blocks3d.h5
+  # A resumed run places them again from the scenario it stored: the same run.
+  "$DDA" df s.yaml --blocks $B -o part.h5 --stop-at-step 300 -q || fail "df --stop-at-step"
+  "$DDA" df --resume part.h5 -q || fail "resume"
+  "$DDA" history part.h5 --csv > resumed.csv || fail "history of the resumed run"
+  cmp -s all.csv resumed.csv || fail "the resumed run differs from the uninterrupted one"
+  sed 's/name: centre, block: {containing: \[5, 5, 4.5\]}/name: centre, block: {below: 10}/' s.yaml > e.yaml
+  expect_error 1 "e.yaml:[0-9]+: points\[2\].block.below selects 2 blocks of $B \(0, 1\), but a point rides with one" -- \
+    "$DDA" df e.yaml --blocks $B -o r.h5
+  sed 's/name: centre, block: {containing: \[5, 5, 4.5\]}/name: centre, block: {box: [0, 0, 20, 1, 1, 21]}/' s.yaml > e.yaml
+  expect_error 1 "e.yaml:[0-9]+: points\[2\].block.box selects no block of $B\.$" -- "$DDA" df e.yaml --blocks $B -o r.h5
+  sed 's/name: centre, block: {containing: \[5, 5, 4.5\]}/name: centre, block: 2/' s.yaml > e.yaml
+  expect_error 1 "e.yaml:[0-9]+: points\[2\].block is block 2, but $B has 2 blocks \(ids 0 to 1\)\.$" -- \
+    "$DDA" df e.yaml --blocks $B -o r.h5
+  sed 's/block: {containing: \[5, 5, 4.5\]}, at: \[5, 5, 4.5\]/block: {containing: [5, 5, 4.5]}, at: [5, 5, 1]/' s.yaml > e.yaml
+  expect_error 1 "e.yaml:[0-9]+: points\[3\].at puts point 'same' at \(5, 5, 1\), outside block [01] \(centroid \(5.09, 5, 4.48\)\), the block it names\.$" -- \
+    "$DDA" df e.yaml --blocks $B -o r.h5
+  [ ! -e r.h5 ] || fail "a results file was written despite the errors"
+}
+
 # ---------------------------------------------------------------- hardening
 # docs/reliability.md: strict YAML, write errors, outputs that spare the
 # inputs.

@@ -43,6 +43,8 @@ double signed_area(const Polygon2& poly);
 Box2 bounding_box(const Polygon2& poly);
 // Even-odd rule; points exactly on the boundary may go either way.
 bool point_in_polygon(const Polygon2& poly, const Vec2& p);
+// Distance from p to the polygon's boundary (its nearest edge).
+double distance_to_boundary(const Polygon2& poly, const Vec2& p);
 // Reverses the vertex order if the polygon is clockwise.
 void make_counter_clockwise(Polygon2& poly);
 // Extent of the polygon along `dir` (the caliper width across the direction

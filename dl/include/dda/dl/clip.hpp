@@ -24,7 +24,4 @@ bool is_simple_polygon(const Polygon2& poly);
 // and no edge of `inner` crosses an edge of `outer`).
 bool polygon_inside(const Polygon2& outer, const Polygon2& inner);
 
-// Distance from p to the polygon boundary.
-double distance_to_boundary(const Polygon2& poly, const Vec2& p);
-
 }  // namespace dda::dl
