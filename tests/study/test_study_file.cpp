@@ -93,6 +93,22 @@ TEST_F(StudyFile, DrawsReproduceAndAreCommonAcrossTheGrid) {
   EXPECT_EQ(std::stod(c0.values[1]), c0.doc["plane2"]["dip"].as<double>());
 }
 
+TEST_F(StudyFile, LinkedKeysChangeTogether) {
+  // One grid axis of two key paths (2 points) times plane2.dip (2 values).
+  const Study s = read(kWedge + "vary:\n  \"phi, plane1.dip\": [[20, 45], [30, 55]]\n  plane2.dip: [50, 52]\n" +
+                       "measure: [fs]\n");
+  EXPECT_EQ(s.case_count(), 4u);
+  EXPECT_EQ(s.value_columns(), (std::vector<std::string>{"phi", "plane1.dip", "plane2.dip"}));
+  const Case c = make_case(s, 3);
+  EXPECT_EQ(c.values, (std::vector<std::string>{"30", "55", "52"}));
+  EXPECT_EQ(c.doc["phi"].as<double>(), 30.0);
+  EXPECT_EQ(c.doc["plane1"]["dip"].as<double>(), 55.0);
+  const std::string m = refusal(kWedge + "vary:\n  \"phi, plane1.dip\": [[20, 45], [30]]\nmeasure: [fs]\n");
+  EXPECT_NE(m.find("study.yaml:6: vary.phi, plane1.dip[1] must be a list of 2 values, one per key path, got 1"),
+            std::string::npos)
+      << m;
+}
+
 TEST_F(StudyFile, UnknownKeyPathIsNamedWithItsLine) {
   const std::string m = refusal(kWedge + "vary:\n  phi: [20]\n  plane1.dipp: [45]\nmeasure: [fs]\n");
   // Line 7 holds the list of plane1.dipp; the wedge reader names the key it does not know.

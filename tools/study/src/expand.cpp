@@ -46,8 +46,11 @@ Case make_case(const Study& study, std::size_t index) {
     grid /= study.vary[k].values.size();
   }
   for (std::size_t k = 0; k < study.vary.size(); ++k) {
-    set_or_fail(c, c.doc, study.vary[k].path, study.vary[k].values[pick[k]]);
-    c.values.push_back(study.vary[k].texts[pick[k]]);
+    const VariedKey& v = study.vary[k];
+    for (std::size_t p = 0; p < v.paths.size(); ++p) {
+      set_or_fail(c, c.doc, v.paths[p], v.values[pick[k]][p]);
+      c.values.push_back(v.texts[pick[k]][p]);
+    }
   }
   if (!study.seeds.empty()) {
     c.seed = study.seeds[seed_index];

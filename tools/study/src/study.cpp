@@ -29,7 +29,8 @@ std::size_t Study::case_count() const { return grid_points() * std::max<std::siz
 
 std::vector<std::string> Study::value_columns() const {
   std::vector<std::string> out;
-  for (const VariedKey& v : vary) out.push_back(v.path.text);
+  for (const VariedKey& v : vary)
+    for (const KeyPath& p : v.paths) out.push_back(p.text);
   for (const SampledKey& s : sampled) out.push_back(s.path.text);
   for (const SampledPlane& p : planes) {
     out.push_back(p.dip.text);
@@ -68,13 +69,24 @@ KeyPath key_path_of(const YamlNode& where, const std::string& text) {
   return *p;
 }
 
-// Sets `value` at `path` in a copy of the base and reads it as a case would;
-// `where` (the study file's node) takes the blame for anything wrong.
-void try_value(const Study& s, const CaseCheck& check, const YamlNode& where, const KeyPath& path,
-               const YAML::Node& value, const std::string& shown) {
+std::string text_of(const YAML::Node& n) {
+  if (n.IsScalar()) return n.Scalar();
+  YAML::Emitter e;
+  e << YAML::Flow << n;
+  return e.c_str();
+}
+
+// Sets each value at its path in a copy of the base and reads it as a case
+// would; `where` (the study file's node) takes the blame for anything wrong.
+void try_values(const Study& s, const CaseCheck& check, const YamlNode& where,
+                const std::vector<std::pair<KeyPath, YAML::Node>>& settings, const std::string& shown) {
   YAML::Node doc = YAML::Clone(s.base);
-  const std::string missing = set_at(doc, path, value);
-  if (!missing.empty()) where.fail("names no key of the base (" + missing + ")");
+  for (const auto& [path, value] : settings) {
+    const std::string missing = set_at(doc, path, value);
+    if (!missing.empty())
+      where.fail((settings.size() > 1 ? "sets " + path.text + ", which names" : std::string("names")) +
+                 " no key of the base (" + missing + ")");
+  }
   try {
     check(doc, s.base_label);
   } catch (const InputError& e) {
@@ -83,12 +95,26 @@ void try_value(const Study& s, const CaseCheck& check, const YamlNode& where, co
   }
 }
 
-std::string text_of(const YAML::Node& n) {
-  if (n.IsScalar()) return n.Scalar();
-  YAML::Emitter e;
-  e << YAML::Flow << n;
-  return e.c_str();
+void try_value(const Study& s, const CaseCheck& check, const YamlNode& where, const KeyPath& path,
+               const YAML::Node& value, const std::string& shown) {
+  try_values(s, check, where, {{path, value}}, shown);
 }
+
+// "a, b" -> the key paths a and b.
+std::vector<KeyPath> key_paths_of(const YamlNode& where, const std::string& text) {
+  std::vector<KeyPath> out;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t comma = std::min(text.find(',', start), text.size());
+    std::string part = text.substr(start, comma - start);
+    part.erase(0, part.find_first_not_of(' '));
+    part.erase(part.find_last_not_of(' ') + 1);
+    out.push_back(key_path_of(where, part));
+    start = comma + 1;
+  }
+  return out;
+}
+
 
 void read_base(Study& s, const YamlNode& root) {
   const std::string which = root.one_of({"scenario", "wedge"});
@@ -119,14 +145,30 @@ void read_vary(Study& s, const YamlNode& root, const CaseCheck& check) {
   if (vary->keys().empty()) vary->fail("is empty: give at least one key path with its values, or leave vary out");
   for (const std::string& key : vary->keys()) {
     const YamlNode list = vary->child(key);
-    VariedKey v{key_path_of(list, key), {}, {}};
-    if (s.kind == CaseKind::pipeline && key == "seed") list.fail("is what seeds: sets; vary the seed there");
+    VariedKey v{key_paths_of(list, key), {}, {}};
+    for (const KeyPath& p : v.paths)
+      if (s.kind == CaseKind::pipeline && p.text == "seed") list.fail("is what seeds: sets; vary the seed there");
     const std::vector<YamlNode> items = list.items();
     if (items.empty()) list.fail("has no values: an empty list makes an empty grid");
     for (const YamlNode& item : items) {
-      try_value(s, check, item, v.path, item.yaml(), text_of(item.yaml()));
-      v.values.push_back(YAML::Clone(item.yaml()));
-      v.texts.push_back(text_of(item.yaml()));
+      std::vector<YamlNode> parts{item};
+      if (v.paths.size() > 1) {
+        parts = item.items();
+        if (parts.size() != v.paths.size())
+          item.fail("must be a list of " + std::to_string(v.paths.size()) + " values, one per key path, got " +
+                    std::to_string(parts.size()));
+      }
+      std::vector<std::pair<KeyPath, YAML::Node>> settings;
+      std::vector<YAML::Node> nodes;
+      std::vector<std::string> texts;
+      for (std::size_t k = 0; k < parts.size(); ++k) {
+        settings.emplace_back(v.paths[k], parts[k].yaml());
+        nodes.push_back(YAML::Clone(parts[k].yaml()));
+        texts.push_back(text_of(parts[k].yaml()));
+      }
+      try_values(s, check, item, settings, text_of(item.yaml()));
+      v.values.push_back(std::move(nodes));
+      v.texts.push_back(std::move(texts));
     }
     s.vary.push_back(std::move(v));
   }
@@ -206,7 +248,7 @@ void read_failure(Study& s, const YamlNode& root) {
 
 }  // namespace
 
-Study read_study(const std::string& path, const CaseCheck& check) {
+Study read_study(const std::string& path, const CaseCheck& scenario_check) {
   if (!fs::exists(path)) throw InputError(path + ": no such file.");
   const YamlNode root = YamlNode::load_file(path);
   root.allow({"name", "description", "scenario", "wedge", "vary", "seeds", "sample", "measure", "failure"});
@@ -214,6 +256,7 @@ Study read_study(const std::string& path, const CaseCheck& check) {
   s.file = path;
   s.text = root.source_text();
   read_base(s, root);
+  const CaseCheck check = s.kind == CaseKind::wedge ? CaseCheck(check_wedge_document) : scenario_check;
   try {
     check(s.base, s.base_label);
   } catch (const InputError& e) {

@@ -23,7 +23,8 @@ std::optional<CaseRecord> record_from_json(const nlohmann::json& j, std::size_t 
     r.seconds = j.at("seconds").get<double>();
     r.error = j.at("error").get<std::string>();
     const auto& m = j.at("measures");
-    if (!m.is_array() || m.size() != measures) return std::nullopt;
+    // A failed case has no values; a finished one has one per measure.
+    if (!m.is_array() || m.size() != (r.ok ? measures : 0)) return std::nullopt;
     for (const auto& v : m) r.measures.push_back(v.is_null() ? std::numeric_limits<double>::quiet_NaN() : v.get<double>());
     return r;
   } catch (const nlohmann::json::exception&) {
@@ -77,7 +78,10 @@ std::vector<std::string> row(const Study& study, const Case& c, const CaseRecord
 std::string summary_csv(const Study& study, const std::vector<Case>& cases, const std::vector<CaseRecord>& records) {
   std::string out;
   const auto line = [&out](const std::vector<std::string>& cells) {
-    for (std::size_t k = 0; k < cells.size(); ++k) out += (k ? "," : "") + csv_field(cells[k]);
+    for (std::size_t k = 0; k < cells.size(); ++k) {
+      if (k) out += ',';
+      out += csv_field(cells[k]);
+    }
     out += "\n";
   };
   line(summary_header(study));

@@ -28,10 +28,13 @@ enum class CaseKind {
   wedge,     // the analytical wedge of `dda wedge`, run in-process
 };
 
+// One axis of the grid: a key path and its values, or several key paths
+// that change together ("a, b": [[a1, b1], [a2, b2]]), for values tied to
+// each other such as a joint bridge that is a fraction of the trace length.
 struct VariedKey {
-  KeyPath path;
-  std::vector<YAML::Node> values;
-  std::vector<std::string> texts;  // each value as the summary shows it
+  std::vector<KeyPath> paths;
+  std::vector<std::vector<YAML::Node>> values;   // per grid value, one node per path
+  std::vector<std::vector<std::string>> texts;   // the same as the summary shows them
 };
 
 struct SampledKey {
@@ -78,10 +81,10 @@ struct Study {
 // the document stands for.
 using CaseCheck = std::function<void(const YAML::Node& doc, const std::string& label)>;
 
-Study read_study(const std::string& path, const CaseCheck& check);
+// `scenario_check` reads a scenario study's cases (it needs the stages, in
+// tools/src); a wedge study's cases are read by check_wedge_document.
+Study read_study(const std::string& path, const CaseCheck& scenario_check);
 
-// The kind's own reader as a CaseCheck: the wedge reader for wedge studies.
-// Pipeline checks need the stages (tools/src) and are given by the caller.
 void check_wedge_document(const YAML::Node& doc, const std::string& label);
 
 }  // namespace dda::study

@@ -16,7 +16,7 @@ struct CaseRecord {
   bool ok = false;
   double seconds = 0;
   std::string error;             // the case's one-sentence error when it failed
-  std::vector<double> measures;  // one per measure; NaN where there is none
+  std::vector<double> measures;  // ok: one per measure, NaN where there is none; failed: none
 };
 
 // As each case's case.json holds it (and an MPI worker sends it).
