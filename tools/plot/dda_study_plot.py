@@ -12,7 +12,10 @@ summary.csv:
   with P(FS < 1).
 
     dda_study_plot.py summary.csv -o FIGURES --value KEY ... --measure NAME ...
-        [--failure NAME below|above X] [--wedge]
+        [--linked KEY,KEY ...] [--failure NAME below|above X] [--wedge]
+
+--linked names key paths that change together (one grid axis): they are
+drawn once more as one axis, a value per combination ("5, 1").
 """
 
 import argparse
@@ -78,6 +81,14 @@ def ordered_values(texts):
     return distinct
 
 
+def turn_labels(ax, labels):
+    """Many or long tick labels are turned so that they do not overlap."""
+    if len(labels) > 8 or max(len(t) for t in labels) > 6:
+        for label in ax.get_xticklabels():
+            label.set_rotation(45)
+            label.set_horizontalalignment("right")
+
+
 def measure_against(rows, value, measure, out):
     texts = [r[value] for r in rows]
     ys = np.array([number(r[measure]) for r in rows])
@@ -87,6 +98,7 @@ def measure_against(rows, value, measure, out):
         groups = [ys[[t == d for t in texts]] for d in distinct]
         groups = [g[np.isfinite(g)] for g in groups]
         ax.boxplot(groups, labels=distinct, showfliers=False)
+        turn_labels(ax, distinct)
         rng = np.random.default_rng(0)  # a fixed jitter: the figure is the same on every run
         for i, g in enumerate(groups):
             ax.plot(i + 1 + rng.uniform(-0.15, 0.15, len(g)), g, ".", color="tab:blue", alpha=0.5, markersize=4)
@@ -95,7 +107,7 @@ def measure_against(rows, value, measure, out):
         ax.plot(xs, ys, ".", alpha=0.4, markersize=3)
     ax.set_xlabel(value)
     ax.set_ylabel(measure)
-    ax.set_title(f"{measure} against {value} ({len(rows)} cases)")
+    ax.set_title(f"{measure} ({len(rows)} cases)")
     save_atomically(fig, os.path.join(out, f"measure_{file_part(measure)}_vs_{file_part(value)}.png"))
     plt.close(fig)
 
@@ -146,6 +158,7 @@ def failure_against(rows, value, rule, out):
     x = np.arange(len(distinct))
     ax.errorbar(x, ps, yerr=[ps - los, his - ps], fmt="o", capsize=4)
     ax.set_xticks(x, distinct)
+    turn_labels(ax, distinct)
     ax.set_ylim(-0.02, 1.02)
     measure, side, limit = rule
     ax.set_xlabel(value)
@@ -185,6 +198,7 @@ def main(argv=None):
     parser.add_argument("-o", dest="out", required=True)
     parser.add_argument("--value", action="append", default=[])
     parser.add_argument("--measure", action="append", default=[])
+    parser.add_argument("--linked", action="append", default=[])
     parser.add_argument("--failure", nargs=3)
     parser.add_argument("--wedge", action="store_true")
     args = parser.parse_args(argv)
@@ -195,6 +209,15 @@ def main(argv=None):
         if name not in rows[0]:
             fail(f"{args.summary}: has no column '{name}'")
     os.makedirs(args.out, exist_ok=True)
+    for group in args.linked:
+        keys = group.split(",")
+        for name in keys:
+            if name not in rows[0]:
+                fail(f"{args.summary}: has no column '{name}'")
+        axis = ", ".join(keys)
+        for r in rows:
+            r[axis] = ", ".join(r[k] for k in keys)
+        args.value.append(axis)
     rule = None
     if args.failure:
         rule = (args.failure[0], args.failure[1], float(args.failure[2]))

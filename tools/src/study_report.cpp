@@ -9,6 +9,7 @@
 namespace dda::cli {
 
 namespace fs = std::filesystem;
+using study::KeyPath;
 
 Interval wilson_interval(std::size_t k, std::size_t n, double z) {
   if (n == 0) return {0, 1};
@@ -90,6 +91,12 @@ void draw_study_figures(const study::Study& study, const fs::path& outdir, bool 
   std::vector<std::string> args{(outdir / "summary.csv").string(), "-o", figures.string()};
   for (const std::string& c : study.value_columns()) args.insert(args.end(), {"--value", c});
   for (const auto& m : study.measures) args.insert(args.end(), {"--measure", m.name});
+  for (const study::VariedKey& v : study.vary) {
+    if (v.paths.size() < 2) continue;
+    std::string keys;
+    for (const KeyPath& p : v.paths) keys += (keys.empty() ? "" : ",") + p.text;
+    args.insert(args.end(), {"--linked", keys});
+  }
   if (study.failure)
     args.insert(args.end(), {"--failure", study.failure->measure,
                              study.failure->below ? "below" : "above",
