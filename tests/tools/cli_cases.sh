@@ -1446,7 +1446,7 @@ case_study_mpi_matches_local() {
   "$DDA" study study.yaml -o local --no-plots -q || fail "local study"
   as_root=()
   [ "$(id -u)" -eq 0 ] && as_root=(--allow-run-as-root)
-  mpirun -n 3 --oversubscribe "${as_root[@]}" "$DDA" study study.yaml -o mpi --no-plots > mpi.log 2>&1 \
+  "${MPIEXEC:-mpirun}" -n 3 --oversubscribe "${as_root[@]}" "$DDA" study study.yaml -o mpi --no-plots > mpi.log 2>&1 \
     || fail "mpirun: $(cat mpi.log)"
   grep -q "study: 3 cases, 3 ok, 0 failed" mpi.log || fail "$(cat mpi.log)"
   cmp -s <(without_seconds local/summary.csv) <(without_seconds mpi/summary.csv) \
