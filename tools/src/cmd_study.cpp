@@ -107,9 +107,7 @@ void add_study_command(CLI::App& app, const GlobalOptions& global) {
   cmd->callback([opt, &global] {
     const MpiWorld world;
     const bool root_rank = world.rank() == 0;
-    const study::Study study = study::read_study(opt->study, [](const YAML::Node& doc, const std::string& label) {
-      return check_case_scenario(doc, label);
-    });
+    const study::Study study = study::read_study(opt->study, check_case_scenario);
     const bool wedge = study.kind == study::CaseKind::wedge;
     const std::size_t count = study.case_count();
     const long long limit = opt->max_cases > 0 ? opt->max_cases : (wedge ? 1000000 : 500);
