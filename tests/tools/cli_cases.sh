@@ -1439,6 +1439,32 @@ YAML
   true
 }
 
+# A case whose run dies (here: killed) is a failed row and the study goes
+# on; --retry-failed runs it again.
+case_study_case_killed() {
+  write_incline_study
+  sed -i 's/total_time: 0.5,/total_time: 20,/' incline.yaml
+  printf 'scenario: incline.yaml\nseeds: 2\nmeasure:\n  - {kind: point_displacement, point: slider, name: slide}\n' > two.yaml
+  "$DDA" study two.yaml -o out -j 1 --no-plots > run.txt 2> err.txt &
+  pid=$!
+  child=""
+  for _ in $(seq 1 600); do
+    child=$(pgrep -f "run out/cases/c0000/scenario.yaml" | head -1)
+    [ -n "$child" ] && break
+    sleep 0.02
+  done
+  [ -n "$child" ] || { kill $pid; fail "the first case never started"; }
+  kill -KILL "$child"
+  wait $pid || fail "the study stopped with its case: $(cat err.txt)"
+  grep -q "study: 2 cases, 1 ok, 1 failed" run.txt || fail "$(cat run.txt)"
+  grep -q '^c0000,1,,,failed,.*,its dda run was killed by signal 9\.$' out/summary.csv || fail "$(cat out/summary.csv)"
+  grep -q '^c0001,2,,[0-9.e-]*,ok,' out/summary.csv || fail "$(cat out/summary.csv)"
+  "$DDA" study two.yaml -o out -j 1 --no-plots -q || fail "resume"
+  grep -q '^c0000,1,,,failed' out/summary.csv || fail "a plain rerun ran the failed case again"
+  "$DDA" study two.yaml -o out -j 1 --no-plots -q --retry-failed || fail "--retry-failed"
+  [ "$(grep -c ',ok,' out/summary.csv)" -eq 2 ] || fail "--retry-failed left: $(cat out/summary.csv)"
+}
+
 # The same study across three MPI ranks (rank 0 hands out the cases): the
 # summary is the local run's, value for value.
 case_study_mpi_matches_local() {
