@@ -157,6 +157,11 @@ TEST_F(StudyFile, OtherRefusals) {
                     "min: 40, max: 45}}}\nmeasure: [fs]\n")
                 .find("% of its law between min and max"),
             std::string::npos);
+  // One key given values in two places.
+  EXPECT_NE(refusal(kWedge + "vary:\n  phi: [20, 30]\nsample: {seed: 1, draws: 2, values: {phi: {distribution: "
+                             "normal, mean: 30, std: 2}}}\nmeasure: [fs]\n")
+                .find("study.yaml: sets the key path 'phi' twice"),
+            std::string::npos);
   // A Fisher key path that holds no number of the base.
   EXPECT_NE(refusal(kWedge + "sample: {seed: 1, draws: 2, fisher: [{dip: plane1.strike, dip_direction: "
                              "plane1.dip_direction, kappa: 30}]}\nmeasure: [fs]\n")

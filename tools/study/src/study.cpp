@@ -1,5 +1,6 @@
 #include "dda/study/study.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <limits>
 
@@ -268,6 +269,13 @@ Study read_study(const std::string& path, const CaseCheck& scenario_check) {
   read_sample(s, root, check);
   read_measures(s, root);
   read_failure(s, root);
+  // A key set in two places would take the value of whichever comes last.
+  std::vector<std::string> columns = s.value_columns();
+  std::sort(columns.begin(), columns.end());
+  for (std::size_t k = 1; k < columns.size(); ++k)
+    if (columns[k] == columns[k - 1])
+      throw InputError(path + ": sets the key path '" + columns[k] +
+                       "' twice (vary, sample.values and sample.fisher together): give it its values in one place.");
   return s;
 }
 
