@@ -16,8 +16,11 @@ declare -A shown=(
   [wedge3d]="figures/wedge_view.png"
   [wedge_backanalysis]="figures/friction_segments.png"
   [shaking_table_wedge]="figures/figure18.png"
+  [probabilistic_wedge]="study/figures/fs_histogram.png study/figures/measure_fs_vs_phi.png"
+  [tunnel_study]="study/figures/failure_vs_joint_sets_0_mean_length_joint_sets_0_mean_bridge.png study/figures/measure_crown_peak_vs_joint_sets_0_mean_length_joint_sets_0_mean_bridge.png"
 )
-[[ $# -gt 0 ]] || set -- layered_tunnel tunnel_roof site_response wedge3d wedge_backanalysis shaking_table_wedge
+[[ $# -gt 0 ]] || set -- layered_tunnel tunnel_roof site_response wedge3d wedge_backanalysis shaking_table_wedge \
+  probabilistic_wedge tunnel_study
 for name in "$@"; do
   [[ -n "${shown[$name]:-}" ]] || { echo "gallery.sh: no figures are chosen for example '$name'" >&2; exit 1; }
   out="$(mktemp -d)"

@@ -11,6 +11,7 @@ packages=(
   libhdf5-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev libtinyxml2-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-matplotlib python3-h5py python3-numpy
+  openmpi-bin libopenmpi-dev
 )
 
 missing=()

@@ -51,11 +51,20 @@ void check_dimension(const YamlNode& root) {
 
 }  // namespace
 
-YamlNode load_scenario(const std::string& path) {
-  YamlNode root = YamlNode::load_file(path);
+namespace {
+
+YamlNode checked_sections(YamlNode root) {
   root.allow(scenario_sections());
   check_dimension(root);
   return root;
+}
+
+}  // namespace
+
+YamlNode load_scenario(const std::string& path) { return checked_sections(YamlNode::load_file(path)); }
+
+YamlNode load_scenario_text(const std::string& text, const std::string& file_label) {
+  return checked_sections(YamlNode::load_string(text, file_label));
 }
 
 std::uint64_t scenario_seed(const YamlNode& root) {

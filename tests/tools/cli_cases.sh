@@ -1308,5 +1308,263 @@ case_report_html() {
   true
 }
 
+
+# ---------------------------------------------------------------- studies
+# (dda study, docs/studies.md)
+
+# The V4 wedge of docs/validation.md as a study base.
+write_wedge_study() {
+  cat > wedge_study.yaml <<'YAML'
+wedge:
+  plane1: {dip: 51.4, dip_direction: 65.8}
+  plane2: {dip: 51.4, dip_direction: 295.2}
+  phi: 30
+  azimuth: 0
+vary:
+  phi: [26, 28, 30]
+sample:
+  seed: 5
+  draws: 4
+  values:
+    plane1.dip: {distribution: normal, mean: 51.4, std: 2}
+measure: [fs, yield_acceleration]
+failure: {measure: fs, below: 1.5}
+YAML
+}
+
+# summary.csv without its seconds column (the one column that may differ
+# between two runs of the same study).
+without_seconds() {
+  /usr/bin/python3 - "$1" <<'PY'
+import csv, sys
+rows = list(csv.reader(open(sys.argv[1], newline="")))
+k = rows[0].index("seconds")
+for r in rows:
+    print(",".join(r[:k] + r[k + 1:]))
+PY
+}
+
+case_study_wedge_cases() {
+  write_wedge_study
+  "$DDA" study wedge_study.yaml -o out --no-plots > run.txt || fail "study"
+  # 3 grid points x 4 draws = 12 cases.
+  [ "$(wc -l < out/summary.csv)" -eq 13 ] || fail "expected a header and 12 rows: $(cat out/summary.csv)"
+  head -1 out/summary.csv | grep -qx "case,seed,draw,phi,plane1.dip,fs,yield_acceleration,failed,status,seconds,error" \
+    || fail "header: $(head -1 out/summary.csv)"
+  grep -q "study: 12 cases, 12 ok, 0 failed" run.txt || fail "$(cat run.txt)"
+  # Every row is dda wedge on its own values, digit for digit.
+  /usr/bin/python3 - "$DDA" <<'PY' || fail "a case differs from dda wedge on the same planes"
+import csv, json, subprocess, sys
+for r in csv.DictReader(open("out/summary.csv")):
+    j = json.loads(subprocess.run([sys.argv[1], "wedge", "--plane", f"{r['plane1.dip']}/65.8", "--plane", "51.4/295.2",
+                                   "--phi", r["phi"], "--azimuth", "0", "--json"], check=True, capture_output=True).stdout)
+    assert float(r["fs"]) == j["fs"], (r, j["fs"])
+    assert float(r["yield_acceleration"]) == j["yield_acceleration_g"], (r, j)
+    assert r["failed"] == ("1" if j["fs"] < 1.5 else "0"), r
+PY
+  # Draw d has the same dip at every phi (common random numbers), and the
+  # study run again gives the same summary value for value.
+  [ "$(cut -d, -f3,5 out/summary.csv | sort -u | wc -l)" -eq 5 ] || fail "draws differ between grid points"
+  "$DDA" study wedge_study.yaml -o again --no-plots -q || fail "second run"
+  cmp -s <(without_seconds out/summary.csv) <(without_seconds again/summary.csv) || fail "a second run differs"
+  /usr/bin/python3 -c "
+import h5py, sys
+f = h5py.File('out/study.h5', 'r')
+assert f.attrs['format'] == b'dda-study' or f.attrs['format'] == 'dda-study'
+assert len(f['cases/id']) == 12 and len(f['measures/fs']) == 12
+assert 'phi: [26, 28, 30]' in (f.attrs['study_text'].decode() if isinstance(f.attrs['study_text'], bytes) else f.attrs['study_text'])
+" || fail "study.h5"
+  ls -a out | grep -q '\.tmp' && fail "temporary files left behind"
+  true
+}
+
+case_study_bad_input() {
+  write_wedge_study
+  write_scenario
+  # An unknown key path, as the scenario reader sees it (with its hint).
+  printf 'scenario: scenario.yaml\nvary:\n  joint_sets[0].mean_lenght: [5, 10]\nmeasure: [{kind: stats, key: blocks}]\n' > s1.yaml
+  expect_error 1 "^dda: s1.yaml:3: vary.joint_sets\[0\].mean_lenght\[0\] = 5 is refused by the scenario reader: unknown key 'joint_sets\[0\].mean_lenght' \(did you mean 'mean_length'\?\)" \
+    -- "$DDA" study s1.yaml -o out1
+  # A list index the base does not have.
+  printf 'scenario: scenario.yaml\nvary:\n  joint_sets[5].dip: [5]\nmeasure: [{kind: stats, key: blocks}]\n' > s2.yaml
+  expect_error 1 "^dda: s2.yaml:3: vary.joint_sets\[5\].dip\[0\] names no key of the base \(the base has no joint_sets\[5\]\)" \
+    -- "$DDA" study s2.yaml -o out2
+  # A value out of range, on its own line.
+  printf 'scenario: scenario.yaml\nvary:\n  joint_sets[0].mean_length:\n    - 5\n    - -3\nmeasure: [{kind: stats, key: blocks}]\n' > s3.yaml
+  expect_error 1 "^dda: s3.yaml:5: vary.joint_sets\[0\].mean_length\[1\] = -3 is refused by the scenario reader: joint_sets\[0\].mean_length must be > 0, got -3" \
+    -- "$DDA" study s3.yaml -o out3
+  # An empty grid.
+  printf 'scenario: scenario.yaml\nvary:\n  joint_sets[0].dip: []\nmeasure: [{kind: stats, key: blocks}]\n' > s4.yaml
+  expect_error 1 "^dda: s4.yaml:3: vary.joint_sets\[0\].dip has no values" -- "$DDA" study s4.yaml -o out4
+  # A sampled value whose law the scenario cannot take.
+  printf 'scenario: scenario.yaml\nsample:\n  seed: 1\n  draws: 3\n  values:\n    joint_sets[0].randomness: {distribution: uniform, min: 1, max: 2}\nmeasure: [{kind: stats, key: blocks}]\n' > s5.yaml
+  expect_error 1 "^dda: s5.yaml:6: sample.values.joint_sets\[0\].randomness = 1.5 is refused by the scenario reader: joint_sets\[0\].randomness must be" \
+    -- "$DDA" study s5.yaml -o out5
+  # Too many cases for a study without --yes.
+  printf 'scenario: scenario.yaml\nseeds: 600\nmeasure: [{kind: stats, key: blocks}]\n' > s6.yaml
+  expect_error 1 "^dda: s6.yaml: makes 600 cases, more than 500; give --yes" -- "$DDA" study s6.yaml -o out6
+  expect_error 1 "^dda: s6.yaml: makes 600 cases, more than 10; give --yes" -- "$DDA" study s6.yaml -o out6 --max-cases 10
+  # A measure kind of the other case kind, and a missing file.
+  printf 'scenario: scenario.yaml\nmeasure: [fs]\n' > s7.yaml
+  expect_error 1 "^dda: s7.yaml:2: measure\[0\] names the measure kind 'fs', which a scenario study does not have" \
+    -- "$DDA" study s7.yaml -o out7
+  expect_error 1 "^dda: nothere.yaml: no such file" -- "$DDA" study nothere.yaml -o out8
+  # Nothing was written for any of them.
+  for k in 1 2 3 4 5 6 7 8; do [ ! -e "out$k" ] || fail "a refused study wrote out$k"; done
+  true
+}
+
+
+# A block sliding down a 30 degree incline (write_incline) for 0.5 s, the
+# interface friction varied: a study of three full pipelines whose
+# measures have closed forms.
+write_incline_study() {
+  write_incline
+  sed -i 's/total_time: 1.0, output_interval: 0.25/total_time: 0.5, output_interval: 0.25/' incline.yaml
+  cat > study.yaml <<'YAML'
+scenario: incline.yaml
+vary:
+  joints.interface.friction_deg: [10, 20, 40]
+measure:
+  - {kind: point_displacement, point: slider, name: slide}
+  - {kind: point_displacement, point: slider, of: peak, name: slide_peak}
+  - {kind: blocks_displaced, threshold: 0.1, name: moved}
+  - {kind: stats, key: blocks, name: blocks}
+  - kinetic_energy
+failure: {measure: slide, above: 0.1}
+YAML
+}
+
+case_study_pipeline_measures() {
+  write_incline_study
+  "$DDA" study study.yaml -o out -j 2 --no-plots > run.txt 2> err.txt || fail "study: $(cat err.txt)"
+  grep -q "study: 3 cases, 3 ok, 0 failed" run.txt || fail "$(cat run.txt)"
+  for c in c0000 c0001 c0002; do
+    for f in scenario.yaml lines.h5 blocks.h5 stats.json results.h5 log.txt case.json; do
+      [ -s "out/cases/$c/$f" ] || fail "out/cases/$c/$f missing"
+    done
+  done
+  /usr/bin/python3 - <<'PY' || fail "the measures are not those of a block sliding on an incline"
+import csv, math
+g, a, t = 9.81, math.radians(30), 0.5
+for r in csv.DictReader(open("out/summary.csv")):
+    phi = math.radians(float(r["joints.interface.friction_deg"]))
+    # Sliding block: s = g (sin a - cos a tan phi) t^2 / 2 while phi < a,
+    # and at rest otherwise (friction 40 deg > 30 deg).
+    acc = max(0.0, g * (math.sin(a) - math.cos(a) * math.tan(phi)))
+    s = acc * t * t / 2
+    slide = float(r["slide"])
+    print(f"phi {r['joints.interface.friction_deg']}: slide {slide:.5f} m, expected {s:.5f} m")
+    if s > 0:
+        assert abs(slide - s) <= 0.02 * s, (slide, s)
+        # Kinetic energy of the 1 m x 1 m slider (2000 kg/m) at v = acc t; the
+        # fixed slab does not move.
+        ke = 0.5 * 2000 * (acc * t) ** 2
+        assert abs(float(r["kinetic_energy"]) - ke) <= 0.04 * ke, (r["kinetic_energy"], ke)
+        assert r["moved"] == "1" and r["failed"] == "1", r
+    else:
+        assert slide < 1e-3, slide
+        assert r["moved"] == "0" and r["failed"] == "0", r
+    assert float(r["slide_peak"]) >= slide and float(r["slide_peak"]) <= slide + 1e-3, r
+    # The model has two blocks: the slab and the slider.
+    assert r["blocks"] == "2" and r["status"] == "ok", r
+PY
+  # Wilson 95 % interval of 2 of 3 by hand: centre (2/3 + z^2/6)/(1 + z^2/3) = 0.5731, half width
+  # z/(1 + z^2/3) sqrt((2/9)/3 + z^2/36) = 0.3654, z = 1.96.
+  grep -q "probability of failure P(slide > 0.1) = 0.6667 (2 of 3 cases; 95 % interval 0.2077 to 0.9385)" run.txt \
+    || fail "$(cat run.txt)"
+  ls -a out | grep -q '\.tmp' && fail "temporary files left behind"
+  true
+}
+
+# A failing case is recorded with its error and the others run; a study
+# killed while a case runs resumes: the finished cases are kept, the killed
+# one runs again, and the summary is the one an uninterrupted run gives.
+case_study_resume_and_failure() {
+  write_incline_study
+  # The slider's measurement point sits in an opening the last value cuts
+  # out of the slider: that case's forward run has no block for it.
+  cat > study.yaml <<'YAML'
+scenario: incline.yaml
+vary:
+  joints.interface.friction_deg: [10, 20, 25, 40]
+  excavations:
+    - []
+    - [{shape: circle, center: [5.379, 3.683], radius: 0.2}]
+measure:
+  - {kind: point_displacement, point: slider, name: slide}
+YAML
+  "$DDA" study study.yaml -o full -j 1 --no-plots -q || fail "uninterrupted study"
+  [ "$(grep -c ',ok,' full/summary.csv)" -eq 4 ] || fail "expected 4 cases ok: $(cat full/summary.csv)"
+  [ "$(grep -c ',failed,' full/summary.csv)" -eq 4 ] || fail "expected 4 cases failed: $(cat full/summary.csv)"
+  grep ",failed," full/summary.csv | head -1 | grep -q ",\"scenario.yaml: the measurement point .slider. at (5.379165125, 3.683012702) lies in no block: it is inside an excavation.\"$" \
+    || fail "a failed case does not say why: $(grep ',failed,' full/summary.csv | head -1)"
+  # Killed while its third case runs, then run again.
+  DDA_PROGRESS_SECONDS=0.2 "$DDA" study study.yaml -o part -j 1 --no-plots 2> part.log &
+  pid=$!
+  for _ in $(seq 1 600); do [ -e part/cases/c0002/scenario.yaml ] && break; sleep 0.05; done
+  [ -e part/cases/c0002/scenario.yaml ] || { kill $pid; fail "the study never reached its third case"; }
+  kill -TERM $pid; wait $pid 2>/dev/null
+  # The killed study's running case died with it (no dda run left on c0002).
+  sleep 0.5
+  pgrep -f "run part/cases/c0002/scenario.yaml" > /dev/null && fail "the killed study's case runs on"
+  [ -e part/cases/c0000/case.json ] && [ -e part/cases/c0001/case.json ] || fail "the first two cases did not finish"
+  [ ! -e part/cases/c0002/case.json ] || fail "the killed case has a record"
+  [ ! -e part/summary.csv ] || fail "a killed study wrote a summary"
+  before=$(stat -c %Y part/cases/c0000/case.json)
+  sleep 1
+  DDA_PROGRESS_SECONDS=0.05 "$DDA" study study.yaml -o part -j 2 --no-plots 2> resume.log > /dev/null \
+    || fail "resume: $(cat resume.log)"
+  grep -q "2 of 8 cases already finished, 6 to run" resume.log || fail "resume did not skip: $(cat resume.log)"
+  [ "$(stat -c %Y part/cases/c0000/case.json)" = "$before" ] || fail "a finished case ran again"
+  cmp -s <(without_seconds full/summary.csv) <(without_seconds part/summary.csv) \
+    || fail "the resumed summary differs: $(diff <(without_seconds full/summary.csv) <(without_seconds part/summary.csv))"
+  # Progress lines while it runs, and the last one counts the case that failed before the kill too.
+  [ "$(grep -c "^study: [0-9]/8 cases  [0-9] failed  .* elapsed  ETA" resume.log)" -ge 2 ] || fail "progress: $(cat resume.log)"
+  tail -1 resume.log | grep -q "^study: 8/8 cases  4 failed" || fail "last progress line: $(cat resume.log)"
+  true
+}
+
+# A case whose run dies (here: killed) is a failed row and the study goes
+# on; --retry-failed runs it again.
+case_study_case_killed() {
+  write_incline_study
+  sed -i 's/total_time: 0.5,/total_time: 20,/' incline.yaml
+  printf 'scenario: incline.yaml\nseeds: 2\nmeasure:\n  - {kind: point_displacement, point: slider, name: slide}\n' > two.yaml
+  "$DDA" study two.yaml -o out -j 1 --no-plots > run.txt 2> err.txt &
+  pid=$!
+  child=""
+  for _ in $(seq 1 600); do
+    child=$(pgrep -f "run out/cases/c0000/scenario.yaml" | head -1)
+    [ -n "$child" ] && break
+    sleep 0.02
+  done
+  [ -n "$child" ] || { kill $pid; fail "the first case never started"; }
+  kill -KILL "$child"
+  wait $pid || fail "the study stopped with its case: $(cat err.txt)"
+  grep -q "study: 2 cases, 1 ok, 1 failed" run.txt || fail "$(cat run.txt)"
+  grep -q '^c0000,1,,,failed,.*,its dda run was killed by signal 9\.$' out/summary.csv || fail "$(cat out/summary.csv)"
+  grep -q '^c0001,2,,[0-9.e-]*,ok,' out/summary.csv || fail "$(cat out/summary.csv)"
+  "$DDA" study two.yaml -o out -j 1 --no-plots -q || fail "resume"
+  grep -q '^c0000,1,,,failed' out/summary.csv || fail "a plain rerun ran the failed case again"
+  "$DDA" study two.yaml -o out -j 1 --no-plots -q --retry-failed || fail "--retry-failed"
+  [ "$(grep -c ',ok,' out/summary.csv)" -eq 2 ] || fail "--retry-failed left: $(cat out/summary.csv)"
+}
+
+# The same study across three MPI ranks (rank 0 hands out the cases): the
+# summary is the local run's, value for value.
+case_study_mpi_matches_local() {
+  write_incline_study
+  "$DDA" study study.yaml -o local --no-plots -q || fail "local study"
+  as_root=()
+  [ "$(id -u)" -eq 0 ] && as_root=(--allow-run-as-root)
+  "${MPIEXEC:-mpirun}" -n 3 --oversubscribe "${as_root[@]}" "$DDA" study study.yaml -o mpi --no-plots > mpi.log 2>&1 \
+    || fail "mpirun: $(cat mpi.log)"
+  grep -q "study: 3 cases, 3 ok, 0 failed" mpi.log || fail "$(cat mpi.log)"
+  cmp -s <(without_seconds local/summary.csv) <(without_seconds mpi/summary.csv) \
+    || fail "the MPI summary differs: $(diff <(without_seconds local/summary.csv) <(without_seconds mpi/summary.csv))"
+  true
+}
+
 "case_$CASE"
 echo "PASS [$CASE]"

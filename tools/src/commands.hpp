@@ -34,6 +34,7 @@ void add_record_command(CLI::App& app, const GlobalOptions& global);
 void add_compare_command(CLI::App& app, const GlobalOptions& global);  // DDA history vs analytical
 void add_spectra_command(CLI::App& app, const GlobalOptions& global);  // Fourier, H/V, spectral ratios, response
 void add_report_command(CLI::App& app, const GlobalOptions& global);  // one HTML page of a run
+void add_study_command(CLI::App& app, const GlobalOptions& global);   // sweeps and Monte Carlo studies
 // Writes FOLDER/report.html for the results file (dda report, and dda run at its end).
 void write_run_report(const std::string& results, const std::string& folder, bool quiet);
 struct OutputOptions;

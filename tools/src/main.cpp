@@ -69,6 +69,7 @@ int main(int argc, char** argv) {
   dda::cli::add_compare_command(app, global);
   dda::cli::add_spectra_command(app, global);
   dda::cli::add_report_command(app, global);
+  dda::cli::add_study_command(app, global);
 
   try {
     app.parse(argc, argv);

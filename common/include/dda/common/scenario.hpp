@@ -20,6 +20,10 @@ const std::vector<std::string>& scenario_sections();
 
 // Loads a scenario and checks its top-level keys.
 YamlNode load_scenario(const std::string& path);
+// The same for a scenario held in memory (a study's case, built from its
+// base); `file_label` names it in messages and is the folder relative paths
+// start from, as if the text were that file.
+YamlNode load_scenario_text(const std::string& text, const std::string& file_label);
 
 // `seed` at the top level (default 1): the one seed every random generator
 // of the job derives its streams from.

@@ -50,6 +50,9 @@ class YamlNode {
   const std::string& source_text() const { return doc_->text; }
   const std::string& file() const { return doc_->file; }
   const std::string& path() const { return path_; }  // "" for the root
+  // The yaml-cpp node itself, for code that copies or edits documents (a
+  // study builds each case's scenario from its base this way).
+  const YAML::Node& yaml() const { return node_; }
   int line() const;                                   // 1-based
 
   bool is_map() const { return node_.IsMap(); }

@@ -1,0 +1,166 @@
+#include "study_mpi.hpp"
+
+#include <chrono>
+#include <cstdlib>
+#include <string>
+#include <thread>
+
+#include "dda/common/error.hpp"
+#include "study_case.hpp"
+#include "study_progress.hpp"
+
+#ifdef DDA_HAVE_MPI
+// The C interface only: Open MPI's mpi.h otherwise pulls in its deprecated
+// C++ bindings, which need a library of their own.
+#define OMPI_SKIP_MPICXX 1
+#define MPICH_SKIP_MPICXX 1
+#include <mpi.h>
+#endif
+
+namespace dda::cli {
+
+namespace fs = std::filesystem;
+
+bool launched_by_mpi() {
+  for (const char* var : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK", "PMI_SIZE", "MPI_LOCALNRANKS"})
+    if (std::getenv(var)) return true;
+  return false;
+}
+
+#ifdef DDA_HAVE_MPI
+bool built_with_mpi() { return true; }
+#else
+bool built_with_mpi() { return false; }
+#endif
+
+int MpiWorld::threads_per_rank() const {
+  int local = 1;
+  for (const char* var : {"OMPI_COMM_WORLD_LOCAL_SIZE", "SLURM_NTASKS_PER_NODE", "MPI_LOCALNRANKS"})
+    if (const char* v = std::getenv(var)) {
+      local = std::max(1, std::atoi(v));
+      break;
+    }
+  return std::max(1, machine_cores() / local);
+}
+
+#ifdef DDA_HAVE_MPI
+
+namespace {
+
+enum Tag : int { kAsk = 1, kResult = 2, kWork = 3, kStop = 4 };
+
+// Waits for a message from any rank without spinning a core: rank 0 only
+// hands out cases and shares its node with the ranks that run them.
+MPI_Status probe_politely() {
+  int flag = 0;
+  MPI_Status status{};
+  for (;;) {
+    MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &flag, &status);
+    if (flag) return status;
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+}
+
+std::string receive_text(const MPI_Status& status) {
+  int count = 0;
+  MPI_Get_count(&status, MPI_CHAR, &count);
+  std::string text(static_cast<std::size_t>(count), '\0');
+  MPI_Recv(text.data(), count, MPI_CHAR, status.MPI_SOURCE, status.MPI_TAG, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+  return text;
+}
+
+void send_text(const std::string& text, int to, int tag) {
+  MPI_Send(text.data(), static_cast<int>(text.size()), MPI_CHAR, to, tag, MPI_COMM_WORLD);
+}
+
+}  // namespace
+
+MpiWorld::MpiWorld() {
+  if (!launched_by_mpi()) return;
+  int provided = 0;
+  MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
+  initialised_ = true;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+  MPI_Comm_size(MPI_COMM_WORLD, &size_);
+}
+
+MpiWorld::~MpiWorld() {
+  if (initialised_) MPI_Finalize();
+}
+
+std::vector<study::CaseRecord> run_pipeline_cases_mpi(const study::Study& study, const std::vector<study::Case>& cases,
+                                                      const fs::path& outdir, const PoolOptions& options,
+                                                      const MpiWorld& world) {
+  if (world.rank() != 0) {
+    // A worker: ask, run what comes, send back its record with the next ask.
+    send_text("", 0, kAsk);
+    for (;;) {
+      MPI_Status status{};
+      MPI_Probe(0, MPI_ANY_TAG, MPI_COMM_WORLD, &status);
+      const std::string text = receive_text(status);
+      if (status.MPI_TAG == kStop) return {};
+      const std::size_t i = std::stoul(text);
+      const study::CaseRecord r =
+          run_pipeline_case(study, case_scenario_text(study, cases[i]), case_dir(outdir, cases[i]), options.threads);
+      send_text(std::to_string(i) + "\n" + study::record_json(r).dump(), 0, kResult);
+    }
+  }
+  std::vector<study::CaseRecord> records(cases.size());
+  std::vector<std::size_t> todo;
+  std::size_t skipped_failed = 0;
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    if (auto done = finished_case(case_dir(outdir, cases[i]), case_scenario_text(study, cases[i]),
+                                  study.measures.size(), options.retry_failed)) {
+      records[i] = *done;
+      skipped_failed += !done->ok;
+    } else {
+      todo.push_back(i);
+    }
+  }
+  StudyProgress progress(options.quiet, cases.size(), cases.size() - todo.size(), skipped_failed);
+  std::size_t next = 0;
+  int working = world.size() - 1;
+  while (working > 0) {
+    const MPI_Status status = probe_politely();
+    const std::string text = receive_text(status);
+    if (status.MPI_TAG == kResult) {
+      const std::size_t newline = text.find('\n');
+      const std::size_t i = std::stoul(text.substr(0, newline));
+      const auto record = study::record_from_json(nlohmann::json::parse(text.substr(newline + 1)), study.measures.size());
+      if (!record || i >= records.size()) throw std::runtime_error("a rank sent a case record that does not parse");
+      records[i] = *record;
+      progress.case_done(record->ok);
+    }
+    if (next < todo.size()) {
+      send_text(std::to_string(todo[next++]), status.MPI_SOURCE, kWork);
+    } else {
+      send_text("", status.MPI_SOURCE, kStop);
+      --working;
+    }
+  }
+  progress.finish();
+  return records;
+}
+
+#else  // without MPI: a world of one
+
+MpiWorld::MpiWorld() {
+  if (launched_by_mpi()) {
+    const char* size = std::getenv("OMPI_COMM_WORLD_SIZE");
+    if (!size) size = std::getenv("PMI_SIZE");
+    if (size && std::atoi(size) > 1)
+      throw InputError("this dda was built without MPI, so it cannot share a study among " + std::string(size) +
+                       " ranks: rebuild it with Open MPI installed (libopenmpi-dev), or run the study without mpirun.");
+  }
+}
+
+MpiWorld::~MpiWorld() = default;
+
+std::vector<study::CaseRecord> run_pipeline_cases_mpi(const study::Study&, const std::vector<study::Case>&,
+                                                      const fs::path&, const PoolOptions&, const MpiWorld&) {
+  throw InputError("this dda was built without MPI.");
+}
+
+#endif
+
+}  // namespace dda::cli
