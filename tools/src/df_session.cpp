@@ -22,7 +22,9 @@ extern "C" void on_interrupt(int) { g_interrupted = 1; }
 
 double seconds(std::chrono::steady_clock::duration d) { return std::chrono::duration<double>(d).count(); }
 
-std::string duration(double s) {
+}  // namespace
+
+std::string short_duration(double s) {
   if (!std::isfinite(s) || s < 0) return "?";
   const long t = std::lround(s);
   char buf[32];
@@ -34,8 +36,6 @@ std::string duration(double s) {
     std::snprintf(buf, sizeof buf, "%lds", t);
   return buf;
 }
-
-}  // namespace
 
 std::string num(double v) {
   std::ostringstream s;
@@ -103,7 +103,7 @@ void Progress::update(const ProgressSample& s) {
   bar.resize(width, '-');
   const std::string where = s.total_time > 0 ? model_time(s) : step_of(s.step, s);
   std::fprintf(stderr, "\rDF [%s] %3d%%  %s  step %d  %s left   ", bar.c_str(), percent_done(f),
-               where.c_str(), s.step, duration(left).c_str());
+               where.c_str(), s.step, short_duration(left).c_str());
   std::fflush(stderr);
   drawn_ = true;
 }
@@ -121,9 +121,9 @@ std::string Progress::line(Clock::time_point now) {
                   static_cast<double>(now_.solves - at_line_.solves) / (now_.step - at_line_.step));
     text += pace;
   } else {
-    text += step_of(now_.step + 1, now_) + " under way for " + duration(seconds(now - last_step_at_));
+    text += step_of(now_.step + 1, now_) + " under way for " + short_duration(seconds(now - last_step_at_));
   }
-  return text + "  " + duration(elapsed) + " elapsed  ETA " + duration(left) + "\n";
+  return text + "  " + short_duration(elapsed) + " elapsed  ETA " + short_duration(left) + "\n";
 }
 
 void Progress::heartbeat() {

@@ -110,6 +110,8 @@ std::string energy_created_warning(const std::vector<df::EnergyRecord>& log);
 
 // A number in its shortest usual form.
 std::string num(double v);
+// A duration for progress lines: "1m30s", "2h05m", "12s" ("?" if unknown).
+std::string short_duration(double seconds);
 
 // Where a run from a scenario comes from (the results file's root
 // attributes): the scenario's path and text, the seed of the blocks (else

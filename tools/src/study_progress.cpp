@@ -9,19 +9,6 @@
 
 namespace dda::cli {
 
-std::string short_duration(double s) {
-  if (!std::isfinite(s) || s < 0) return "?";
-  const long t = std::lround(s);
-  char buf[32];
-  if (t >= 3600)
-    std::snprintf(buf, sizeof buf, "%ldh%02ldm", t / 3600, (t % 3600) / 60);
-  else if (t >= 60)
-    std::snprintf(buf, sizeof buf, "%ldm%02lds", t / 60, t % 60);
-  else
-    std::snprintf(buf, sizeof buf, "%lds", t);
-  return buf;
-}
-
 StudyProgress::StudyProgress(bool quiet, std::size_t total, std::size_t skipped, std::size_t skipped_failed)
     : enabled_(!quiet && total > skipped),
       tty_(isatty(STDERR_FILENO) == 1),

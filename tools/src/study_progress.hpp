@@ -40,7 +40,5 @@ class StudyProgress {
   std::thread thread_;
 };
 
-// "1m30s", "2h05m", "12s".
-std::string short_duration(double seconds);
 
 }  // namespace dda::cli
