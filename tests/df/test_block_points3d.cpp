@@ -11,6 +11,7 @@
 #include <string>
 
 #include "../common/input_error_of.hpp"
+#include "../dc/dc3d_test_util.hpp"
 #include "dda/dc/cut3d.hpp"
 #include "dda/df/scenario3d.hpp"
 #include "dda/df/simulation3d.hpp"
@@ -43,15 +44,6 @@ struct Wedge {
   Vec3 line;      // unit line of intersection, pointing down
 };
 
-Fracture3 persistent_plane(const Vec3& normal, const Vec3& point, int set) {
-  Fracture3 f;
-  f.shape = FractureShape::Plane;
-  f.normal = normal.normalized();
-  f.centre = point;
-  f.set = set;
-  return f;
-}
-
 Wedge wedge_blocks() {
   Wedge w;
   const Vec3 nA = dl::normal_from_dip(51.4, 65.8), nB = dl::normal_from_dip(51.4, 295.2), T(0, 0, 10);
@@ -60,7 +52,7 @@ Wedge wedge_blocks() {
   FractureModel fm;
   fm.domain = {Vec3(-8, -2, 0), Vec3(8, 10, 10)};
   fm.sets = {{"A", "user"}, {"B", "user"}};
-  fm.fractures = {persistent_plane(nA, T, 0), persistent_plane(nB, T, 1)};
+  fm.fractures = {dc::test3::plane(nA, T, 0), dc::test3::plane(nB, T, 1)};
   dc::Cut3dOptions options;
   options.free_boundaries = {"z+", "y+"};
   w.blocks = dc::cut_blocks_3d(fm, options).model;
