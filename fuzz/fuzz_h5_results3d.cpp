@@ -4,6 +4,6 @@
 #include "fuzz_h5_image.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  dda::fuzz::read_h5_image(data, size, [](const std::string& path) { dda::df3::read_results3_h5(path, true); });
+  dda::fuzz::read_h5_image(data, size, [](const std::string& path) { dda::df3::read_results3_h5(path); });
   return 0;
 }

@@ -86,10 +86,11 @@ void write_frames(h5::Writer& w, const std::vector<Frame3>& frames, std::size_t 
   h5::Id g = w.group("frames");
   w.attr_text(g.get(), "description", "block states at the output interval; frame 0 is the start of the run");
   std::vector<std::int32_t> step;
-  std::vector<double> time, verts, vel, stress;
+  std::vector<double> time, verts, vel, stress, kinetic;
   for (const Frame3& f : frames) {
     step.push_back(f.step);
     time.push_back(f.time);
+    kinetic.push_back(f.kinetic_energy);
     const std::vector<double> v = flat(f.vertices), u = flat12(f.velocity), s = flat6(f.stress);
     verts.insert(verts.end(), v.begin(), v.end());
     vel.insert(vel.end(), u.begin(), u.end());
@@ -102,6 +103,7 @@ void write_frames(h5::Writer& w, const std::vector<Frame3>& frames, std::size_t 
   w.f64(g.get(), "velocity", vel, {nf, nb, kDofs}, "m/s, rad/s, 1/s",
         std::string("end velocity of each block: ") + kVelocityColumns);
   w.f64(g.get(), "stress", stress, {nf, nb, 6}, "Pa", std::string("stress of each block: ") + kStressColumns);
+  w.f64(g.get(), "kinetic_energy", kinetic, {nf}, "J", "kinetic energy of the free blocks, 1/2 v^T M v summed");
 }
 
 // --------------------------------------------------------------- reading
@@ -135,6 +137,10 @@ void read_log(const h5::Reader& r, Results3& out) {
 
 void read_frames(const h5::Reader& r, Results3& out) {
   df::h5io::read_frame_series(r, out.blocks.blocks, out.frames);
+  out.has_kinetic_energy = r.exists("/frames/kinetic_energy");
+  if (!out.has_kinetic_energy) return;
+  const auto kinetic = read_f64(r, "/frames/kinetic_energy", {out.frames.size()});
+  for (std::size_t f = 0; f < out.frames.size(); ++f) out.frames[f].kinetic_energy = kinetic[f];
 }
 
 }  // namespace
@@ -158,21 +164,22 @@ void write_results3_h5(const std::string& path, const Results3& results, const S
   out.commit();
 }
 
-Results3 read_results3_h5(const std::string& path, bool with_state) {
+Results3 read_results3_h5(const std::string& path, const df::ResultsParts& parts) {
   h5::Reader r(path);
   const df::h5io::RootInfo root = df::h5io::read_root(r, kResults3dFormat);
   Results3 out;
   out.source = root.source;
   out.output = root.output;
   out.complete = root.complete;
-  read_series(r, out);
-  read_log(r, out);
+  if (parts.series) read_series(r, out);
+  if (parts.log) read_log(r, out);
   const std::size_t nb = length(r, "/fixed");
   for (const std::int64_t f : read_i64(r, "/fixed", nb)) out.fixed.push_back(f != 0);
-  if (!with_state) return out;
+  if (!parts.frames) return out;
   out.blocks = read_polyhedra_group(r, "model");
   if (out.blocks.blocks.size() != nb) r.fail("dataset /fixed must have one value per block of /model");
   read_frames(r, out);
+  if (!parts.checkpoint) return out;
   std::vector<std::size_t> counts;
   for (const Polyhedron& b : out.blocks.blocks) counts.push_back(b.vertices.size());
   Simulation3State s = read_checkpoint3(r, counts);

@@ -412,7 +412,7 @@ void write_results_h5(const std::string& path, const Results& results, const Sim
   out.commit();
 }
 
-Results read_results_h5(const std::string& path, bool with_state) {
+Results read_results_h5(const std::string& path, const ResultsParts& parts) {
   h5::Reader r(path);
   const h5io::RootInfo root = h5io::read_root(r, kFormat);
   Results out;
@@ -424,13 +424,14 @@ Results read_results_h5(const std::string& path, bool with_state) {
   const std::size_t offsets = length(r, "/model/blocks/offsets");
   if (offsets < 1) r.fail("dataset /model/blocks/offsets is empty");
   out.block_count = offsets - 1;
-  read_series(r, out);
-  read_log(r, out);
-  read_energy(r, out);
-  read_bolts(r, out);
-  if (!with_state) return out;
+  if (parts.series) read_series(r, out);
+  if (parts.log) read_log(r, out);
+  if (parts.energy) read_energy(r, out);
+  if (parts.bolts) read_bolts(r, out);
+  if (!parts.frames) return out;
   read_model(r, out);
   read_frames(r, out);
+  if (!parts.checkpoint) return out;
   std::vector<std::size_t> counts;
   for (const Block& b : out.blocks.blocks) counts.push_back(b.vertices.size());
   SimulationState s;

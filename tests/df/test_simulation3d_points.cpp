@@ -42,6 +42,25 @@ TEST(Simulation3Points, MeasurementPointFollowsFreeFall) {
   EXPECT_LT(last.stress.norm(), 1e-6);
 }
 
+// Kinetic energy (Simulation3::kinetic_energy, which the results keep with
+// each frame): after 1 s of free fall 1/2 m (g t)^2 = 1/2 2600 9.81^2 J;
+// then the same cube given a spin of 2 rad/s about the vertical through its
+// centroid on top of a velocity (1, -2, 0.5) m/s: 1/2 m |v|^2 + 1/2 I w^2
+// with I = m (1 + 1) / 12 for a unit cube, by hand 6825 + 866.67 J.
+TEST(Simulation3Points, KineticEnergyIsHalfMV2PlusHalfIW2) {
+  Simulation3 sim(one_cube({0, 0, -9.81}));
+  EXPECT_EQ(sim.kinetic_energy(), 0.0);
+  for (int s = 0; s < 100; ++s) sim.step(0.01);
+  EXPECT_NEAR(sim.kinetic_energy(), 0.5 * 2600 * 9.81 * 9.81, 1e-9 * 2600 * 9.81 * 9.81);
+
+  Simulation3 spin(one_cube({0, 0, 0}));
+  Simulation3State state = spin.state();
+  state.velocity[0] << 1, -2, 0.5, 0, 0, 2, 0, 0, 0, 0, 0, 0;
+  spin.restore(state);
+  const double translation = 0.5 * 2600 * (1 + 4 + 0.25), rotation = 0.5 * (2600 * 2.0 / 12) * 4;
+  EXPECT_NEAR(spin.kinetic_energy(), translation + rotation, 1e-9 * (translation + rotation));
+}
+
 // A constant force through the centroid: u = F t^2 / (2 m); a force that
 // grows linearly in time (table 0 -> F over 1 s): u = F t^3 / (6 m).
 TEST(Simulation3Points, PointLoadsAccelerateTheBlock) {

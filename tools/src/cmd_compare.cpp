@@ -66,10 +66,10 @@ PointSeries dda_series(const std::string& path, const std::string& point, const 
     }
   };
   if (three_d) {
-    const df3::Results3 r = df3::read_results3_h5(path, false);
+    const df3::Results3 r = df3::read_results3_h5(path, df::ResultsParts::records());
     fill(r.point_names, r.histories, [](const auto& h) { return Eigen::Vector3d(h.displacement); });
   } else {
-    const df::Results r = df::read_results_h5(path, false);
+    const df::Results r = df::read_results_h5(path, df::ResultsParts::records());
     fill(r.point_names, r.histories,
          [](const auto& h) { return Eigen::Vector3d(h.displacement.x(), h.displacement.y(), 0.0); });
   }

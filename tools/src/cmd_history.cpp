@@ -213,7 +213,7 @@ void add_history_command(CLI::App& app, const GlobalOptions&) {
         write_text_atomically(opt->output, text);
     };
     if (h5_format_of(opt->input) == df3::kResults3dFormat) {
-      const df3::Results3 r = df3::read_results3_h5(opt->input, false);
+      const df3::Results3 r = df3::read_results3_h5(opt->input, df::ResultsParts::records());
       if (opt->acceleration)
         throw InputError(opt->input + ": a 3D results file holds no accelerations (--acceleration is for 2D runs).");
       std::vector<std::size_t> which;
@@ -223,7 +223,7 @@ void add_history_command(CLI::App& app, const GlobalOptions&) {
       emit(opt->steps ? steps_csv3(r) : opt->csv ? points_csv3(r, which) : summary3(r, opt->input, which));
       return;
     }
-    const df::Results r = df::read_results_h5(opt->input, false);
+    const df::Results r = df::read_results_h5(opt->input, df::ResultsParts::records());
     if (opt->acceleration && !r.has_acceleration)
       throw InputError(opt->input + ": holds no accelerations (it was written by an older dda); run it again.");
     std::vector<std::size_t> which;

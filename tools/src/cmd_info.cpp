@@ -54,7 +54,7 @@ void add_info_command(CLI::App& app, const GlobalOptions&) {
       print_provenance(m.provenance);
       if (*show_scenario) std::cout << "\n" << m.provenance.scenario_text;
     } else if (format == "dda-results") {
-      const df::Results r = df::read_results_h5(*input, /*with_state=*/false);
+      const df::Results r = df::read_results_h5(*input, df::ResultsParts::records());
       const double t_end = r.log.empty() ? 0.0 : r.log.back().time;
       std::cout << *input << ": dda-results (" << r.source.input_kind << "), " << r.block_count
                 << " blocks, " << r.log.size() << " steps to t = " << t_end << " s, "
@@ -65,7 +65,7 @@ void add_info_command(CLI::App& app, const GlobalOptions&) {
       print_provenance(r.source.provenance);
       if (*show_scenario) std::cout << "\n" << r.source.provenance.scenario_text;
     } else if (format == df3::kResults3dFormat) {
-      const df3::Results3 r = df3::read_results3_h5(*input, /*with_state=*/false);
+      const df3::Results3 r = df3::read_results3_h5(*input, df::ResultsParts::records());
       const double t_end = r.log.empty() ? 0.0 : r.log.back().time;
       std::size_t held = 0;
       for (const bool f : r.fixed) held += f ? 1 : 0;

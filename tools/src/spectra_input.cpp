@@ -53,7 +53,7 @@ SignalSource::SignalSource(const std::string& path, const std::string& record_un
   const std::string ext = lower_extension(path);
   if (ext == ".h5" || ext == ".hdf5") {
     if (!record_units.empty()) throw InputError("--units: applies to a CSV or AT2 record, not to " + path + ".");
-    results_ = std::make_shared<const df::Results>(df::read_results_h5(path, false));
+    results_ = std::make_shared<const df::Results>(df::read_results_h5(path, df::ResultsParts::records()));
   } else if (ext == ".at2" || !record_units.empty()) {
     RecordReadOptions ro;
     if (!record_units.empty()) ro.units = parse_accel_units(record_units, "--units");

@@ -49,7 +49,7 @@ struct Results {
 
   // Filled by read_results_h5 (the writer takes them from the Simulation).
   bool complete = false;                // the run reached its end
-  std::size_t block_count = 0;          // blocks of the model (also without with_state, when `blocks` is empty)
+  std::size_t block_count = 0;          // blocks of the model (also when the parts read leave `blocks` empty)
   std::vector<std::string> point_names; // measurement points, in model order
   std::vector<int> point_blocks;
   std::vector<StepRecord> log;
@@ -64,10 +64,32 @@ struct Results {
 // Writes everything (atomically) with the log, histories and checkpoint of `sim`.
 void write_results_h5(const std::string& path, const Results& results, const Simulation& sim, bool complete);
 
-// Reads a results file; InputError naming the file for anything wrong.
-// Without `with_state` the block frames and the checkpoint are skipped (for
-// `dda history`, which needs only the series).
-Results read_results_h5(const std::string& path, bool with_state = true);
+// The parts of a results file a reader asks for (2D and 3D). A long run's
+// file is mostly its per-step records (the 86,735 steps of a 20 s incline
+// fill 26 MB with the log, the energy record and the point series), so a
+// reader that needs one of them leaves the rest on disk.
+struct ResultsParts {
+  bool series = true;      // the measurement points and their histories
+  bool log = true;         // the per-step log
+  bool energy = true;      // the energy record (2D; 3D files have none)
+  bool bolts = true;       // the bolt histories (2D)
+  bool frames = true;      // the blocks the run started from and the block frames
+  bool checkpoint = true;  // the state a run resumes from (needs frames)
+
+  static ResultsParts all() { return {}; }
+  // The series, log, energy and bolts, not the blocks (`dda history`, `dda info`).
+  static ResultsParts records() {
+    ResultsParts p;
+    p.frames = p.checkpoint = false;
+    return p;
+  }
+  static ResultsParts none() { return {false, false, false, false, false, false}; }
+};
+
+// Reads a results file, the parts asked for; InputError naming the file for
+// anything wrong in what it reads. The root attributes and the block count
+// are always read.
+Results read_results_h5(const std::string& path, const ResultsParts& parts = ResultsParts::all());
 
 // ParaView: blocks (polygons; cell data block_id, material, displacement of
 // the centroid, velocity, rotation_rate, stress; point data displacement)

@@ -240,6 +240,11 @@ class Simulation3 {
   const std::vector<Polyhedron>& blocks() const { return model_.blocks; }
   const std::vector<Vector12d>& velocities() const { return velocity_; }
   const std::vector<Vector6d>& stresses() const { return stress_; }
+  // J: 1/2 v^T M v of every free block at its end velocity and place (the
+  // twelve rates, rigid and strain; block3d.hpp's mass matrix). Not kept in
+  // the step log: it costs a volume integration of every block, so results
+  // take it with each frame.
+  double kinetic_energy() const;
   const std::vector<Contact3>& contacts() const { return contacts_; }
   const Model3& model() const { return model_; }
   // Per measurement point (model order): sample 0 at the start, then one per step.
