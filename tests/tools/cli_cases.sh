@@ -1367,6 +1367,9 @@ PY
   [ "$(cut -d, -f3,5 out/summary.csv | sort -u | wc -l)" -eq 5 ] || fail "draws differ between grid points"
   "$DDA" study wedge_study.yaml -o again --no-plots -q || fail "second run"
   cmp -s <(without_seconds out/summary.csv) <(without_seconds again/summary.csv) || fail "a second run differs"
+  # The cases share out over threads (-j) without changing a value.
+  "$DDA" study wedge_study.yaml -o threads -j 3 --no-plots -q || fail "run on three threads"
+  cmp -s <(without_seconds out/summary.csv) <(without_seconds threads/summary.csv) || fail "-j 3 differs"
   /usr/bin/python3 -c "
 import h5py, sys
 f = h5py.File('out/study.h5', 'r')
@@ -1477,6 +1480,50 @@ PY
   true
 }
 
+# The same measures in 3D: the cube of df3_incline.yaml on its 20 deg plane,
+# at phi 10 (it slides) and 30 (it holds), 0.5 s.
+case_study_pipeline_measures_3d() {
+  cp "$SRC/tests/data/df3_incline.yaml" . || fail "copy the fixture"
+  sed -i 's/total_time: 1, output_interval: 0.25/total_time: 0.5, output_interval: 0.25/; s/vtk: true/vtk: false/' df3_incline.yaml
+  cat > study.yaml <<'YAML'
+scenario: df3_incline.yaml
+vary:
+  joints.slide.friction_deg: [10, 30]
+measure:
+  - {kind: point_displacement, point: slider, name: slide}
+  - {kind: blocks_displaced, threshold: 0.1, name: moved}
+  - {kind: blocks_below, level: 4.45, name: dropped}
+  - kinetic_energy
+YAML
+  "$DDA" study study.yaml -o out -j 2 --no-plots > run.txt 2> err.txt || fail "study: $(cat err.txt)"
+  grep -q "study: 2 cases, 2 ok, 0 failed" run.txt || fail "$(cat run.txt)"
+  /usr/bin/python3 - <<'PY' || fail "the 3D measures are not those of a block sliding on a plane"
+import csv, math
+g, a, t = 9.81, math.radians(20), 0.5
+# The 3 x 3 m prism between the plane (z = 3 - (x - 5) tan a) and z = 6:
+# volume 27 m^3, mass 2600 * 27 kg; its centroid height by hand
+# (27 - (1.5 tan a)^2 / 3) / 6 = 4.4834 m, above the level 4.45.
+m = 2600 * 27
+for r in csv.DictReader(open("out/summary.csv")):
+    phi = math.radians(float(r["joints.slide.friction_deg"]))
+    acc = max(0.0, g * (math.sin(a) - math.cos(a) * math.tan(phi)))   # V1 in 3D
+    s, v = acc * t * t / 2, acc * t
+    slide, ke = float(r["slide"]), float(r["kinetic_energy"])
+    print(f"phi {r['joints.slide.friction_deg']}: slide {slide:.5f} m (expected {s:.5f}), "
+          f"kinetic energy {ke:.1f} J (expected {0.5 * m * v * v:.1f})")
+    if s > 0:
+        # 0.216 m down the plane drops the centroid 0.074 m, below 4.45.
+        assert abs(slide - s) <= 0.01 * s, (slide, s)
+        assert abs(ke - 0.5 * m * v * v) <= 0.02 * 0.5 * m * v * v, (ke, 0.5 * m * v * v)
+        assert r["moved"] == "1" and r["dropped"] == "1", r
+    else:
+        assert slide < 1e-4 and ke < 1.0, r
+        assert r["moved"] == "0" and r["dropped"] == "0", r
+    assert r["status"] == "ok", r
+PY
+  true
+}
+
 # A failing case is recorded with its error and the others run; a study
 # killed while a case runs resumes: the finished cases are kept, the killed
 # one runs again, and the summary is the one an uninterrupted run gives.
@@ -1576,6 +1623,20 @@ case_study_mpi_matches_local() {
   grep -q "study: 3 cases, 3 ok, 0 failed" mpi.log || fail "$(cat mpi.log)"
   cmp -s <(without_seconds local/summary.csv) <(without_seconds mpi/summary.csv) \
     || fail "the MPI summary differs: $(diff <(without_seconds local/summary.csv) <(without_seconds mpi/summary.csv))"
+  # Wedge cases are shared among the ranks too (every rank takes every
+  # third case), with the local summary.
+  write_wedge_study
+  "$DDA" study wedge_study.yaml -o wedge_local --no-plots -q || fail "local wedge study"
+  "${MPIEXEC:-mpirun}" -n 3 --oversubscribe "${as_root[@]}" "$DDA" study wedge_study.yaml -o wedge_mpi --no-plots \
+    > wedge_mpi.log 2>&1 || fail "mpirun wedge: $(cat wedge_mpi.log)"
+  cmp -s <(without_seconds wedge_local/summary.csv) <(without_seconds wedge_mpi/summary.csv) \
+    || fail "the MPI wedge summary differs: $(diff <(without_seconds wedge_local/summary.csv) <(without_seconds wedge_mpi/summary.csv))"
+  # A bad study is refused by every rank, and said once, by rank 0.
+  sed 's/phi: \[26, 28, 30\]/phi: [26, 28, 95]/' wedge_study.yaml > bad_study.yaml
+  "${MPIEXEC:-mpirun}" -n 3 --oversubscribe "${as_root[@]}" "$DDA" study bad_study.yaml -o bad --no-plots \
+    > bad.out 2> bad.err && fail "mpirun accepted a friction angle of 95 deg"
+  [ "$(grep -c '^dda: ' bad.err)" -eq 1 ] || fail "expected the error once: $(cat bad.err)"
+  grep -q "^dda: bad_study.yaml.*phi" bad.err || fail "$(cat bad.err)"
   true
 }
 

@@ -6,8 +6,11 @@
 
 #include "dda/common/error.hpp"
 #include "dda/common/geometry.hpp"
+#include "dda/common/geometry3.hpp"
+#include "dda/common/model_io.hpp"
 #include "dda/common/text_input.hpp"
 #include "dda/df/results.hpp"
+#include "dda/df/results3d.hpp"
 #include "results_points.hpp"
 
 namespace dda::cli {
@@ -48,34 +51,104 @@ std::vector<Vec2> centroids(const df::Frame& frame, const BlockModel& blocks) {
   }
   return out;
 }
-
-// The results file, read once and only as far as the measures need.
-class ResultsOnDemand {
- public:
-  explicit ResultsOnDemand(fs::path path) : path_(std::move(path)) {}
-  const df::Results& get(const study::MeasureSpec& m, bool frames) {
-    if (!results_ || (frames && !with_frames_)) {
-      if (!fs::exists(path_))
-        throw InputError(path_.string() + " is missing: the measure '" + m.name +
-                         "' needs a forward run (a control section in the scenario).");
-      results_ = df::read_results_h5(path_.string(), frames);
-      with_frames_ = frames;
-    }
-    return *results_;
+// The same for polyhedra: the volume centroid with the frame's vertices.
+std::vector<Vec3> centroids(const df3::Frame3& frame, const PolyhedronModel& blocks) {
+  std::vector<Vec3> out;
+  std::size_t at = 0;
+  for (const Polyhedron& b : blocks.blocks) {
+    const std::size_t n = b.vertices.size();
+    if (at + n > frame.vertices.size()) break;
+    const std::vector<Vec3> vertices(frame.vertices.begin() + static_cast<std::ptrdiff_t>(at),
+                                     frame.vertices.begin() + static_cast<std::ptrdiff_t>(at + n));
+    std::vector<std::vector<int>> faces;
+    for (const PolyFace& f : b.faces) faces.push_back(f.vertices);
+    out.push_back(polyhedron_moments(vertices, faces).centroid);
+    at += n;
   }
-  const std::string path() const { return path_.string(); }
+  return out;
+}
 
- private:
-  fs::path path_;
-  std::optional<df::Results> results_;
-  bool with_frames_ = false;
+// The parts of results.h5 the measures read. A long run's file is mostly
+// its per-step records; a point's history is a tenth of it (the 2D incline
+// of bench/study_overhead.sh: 26 MB in all).
+df::ResultsParts parts_for(const std::vector<study::MeasureSpec>& measures, bool three_d) {
+  df::ResultsParts parts = df::ResultsParts::none();
+  for (const study::MeasureSpec& m : measures) {
+    if (m.kind == "point_displacement") parts.series = true;
+    // 2D keeps the kinetic energy in its energy record, 3D with each frame.
+    if (m.kind == "kinetic_energy") (three_d ? parts.frames : parts.energy) = true;
+    if (m.kind == "blocks_displaced" || m.kind == "blocks_below") parts.frames = true;
+  }
+  return parts;
+}
+
+// What the scenario measures need of a results file, in 2D (x, y; y up)
+// and 3D (x, y, z; z up) alike.
+struct RunMeasures {
+  std::vector<std::string> point_names;
+  std::vector<std::vector<double>> point_displacement;  // per point, |displacement| per sample
+  std::optional<double> final_kinetic_energy;           // J (2D: per metre of thickness)
+  std::vector<double> displacement;                     // per block, of its centroid from the first frame to the last
+  std::vector<double> start_height, end_height;         // per block, of its centroid
+  bool has_frames = false;
 };
+
+template <class Results>
+void take_points(const Results& r, RunMeasures& out) {
+  out.point_names = r.point_names;
+  for (const auto& history : r.histories) {
+    std::vector<double>& norms = out.point_displacement.emplace_back();
+    for (const auto& sample : history) norms.push_back(sample.displacement.norm());
+  }
+}
+
+template <class Frames, class Blocks>
+void take_frames(const Frames& frames, const Blocks& blocks, RunMeasures& out) {
+  out.has_frames = !frames.empty();
+  if (!out.has_frames) return;
+  const auto start = centroids(frames.front(), blocks), end = centroids(frames.back(), blocks);
+  constexpr int up = std::decay_t<decltype(start.front())>::RowsAtCompileTime - 1;
+  for (std::size_t i = 0; i < std::min(start.size(), end.size()); ++i) {
+    out.displacement.push_back((end[i] - start[i]).norm());
+    out.start_height.push_back(start[i][up]);
+    out.end_height.push_back(end[i][up]);
+  }
+}
+
+RunMeasures read_run_measures(const std::string& path, const std::vector<study::MeasureSpec>& measures) {
+  RunMeasures out;
+  if (h5_format_of(path) == df3::kResults3dFormat) {
+    const df3::Results3 r = df3::read_results3_h5(path, parts_for(measures, true));
+    take_points(r, out);
+    if (!r.frames.empty() && r.has_kinetic_energy) out.final_kinetic_energy = r.frames.back().kinetic_energy;
+    take_frames(r.frames, r.blocks, out);
+  } else {
+    const df::Results r = df::read_results_h5(path, parts_for(measures, false));
+    take_points(r, out);
+    if (!r.energy.empty()) out.final_kinetic_energy = r.energy.back().kinetic;
+    take_frames(r.frames, r.blocks, out);
+  }
+  return out;
+}
+
+bool needs_results(const std::vector<study::MeasureSpec>& measures) {
+  for (const study::MeasureSpec& m : measures)
+    if (m.kind != "stats") return true;
+  return false;
+}
 
 }  // namespace
 
 std::vector<double> pipeline_measures(const fs::path& case_dir, const std::vector<study::MeasureSpec>& measures) {
   std::optional<nlohmann::json> stats;
-  ResultsOnDemand results(case_dir / "results.h5");
+  const std::string results_path = (case_dir / "results.h5").string();
+  std::optional<RunMeasures> run;
+  if (needs_results(measures)) {
+    if (!fs::exists(results_path))
+      throw InputError(results_path + " is missing: the measures of the results need a forward run (a control section in "
+                                      "the scenario).");
+    run = read_run_measures(results_path, measures);
+  }
   std::vector<double> out;
   for (const study::MeasureSpec& m : measures) {
     if (m.kind == "stats") {
@@ -83,28 +156,23 @@ std::vector<double> pipeline_measures(const fs::path& case_dir, const std::vecto
       if (!stats) stats = nlohmann::json::parse(read_text_file(path, "statistics"));
       out.push_back(stats_number(*stats, m.key, path));
     } else if (m.kind == "point_displacement") {
-      const df::Results& r = results.get(m, false);
-      const auto& history = r.histories[measurement_point_index(r, m.point, results.path())];
+      const std::vector<double>& norms = run->point_displacement[measurement_point_index(run->point_names, m.point, results_path)];
       double value = 0;
-      for (const auto& sample : history) {
-        const double d = sample.displacement.norm();
-        value = m.of == "peak" ? std::max(value, d) : d;
-      }
+      for (const double d : norms) value = m.of == "peak" ? std::max(value, d) : d;
       out.push_back(value);
     } else if (m.kind == "kinetic_energy") {
-      const df::Results& r = results.get(m, false);
-      out.push_back(r.energy.empty() ? 0.0 : r.energy.back().kinetic);
+      if (!run->final_kinetic_energy)
+        throw InputError(results_path + ": holds no kinetic energy for the measure '" + m.name +
+                         "' (a 3D results file written before its frames kept it; run the case again).");
+      out.push_back(*run->final_kinetic_energy);
     } else if (m.kind == "blocks_displaced" || m.kind == "blocks_below") {
-      const df::Results& r = results.get(m, true);
-      if (r.frames.empty()) throw InputError(results.path() + ": holds no block frames for the measure '" + m.name + "'.");
-      const std::vector<Vec2> start = centroids(r.frames.front(), r.blocks);
-      const std::vector<Vec2> end = centroids(r.frames.back(), r.blocks);
+      if (!run->has_frames) throw InputError(results_path + ": holds no block frames for the measure '" + m.name + "'.");
       double count = 0;
-      for (std::size_t i = 0; i < std::min(start.size(), end.size()); ++i) {
+      for (std::size_t i = 0; i < run->displacement.size(); ++i) {
         if (m.kind == "blocks_displaced")
-          count += (end[i] - start[i]).norm() > m.value;
+          count += run->displacement[i] > m.value;
         else
-          count += start[i].y() >= m.value && end[i].y() < m.value;
+          count += run->start_height[i] >= m.value && run->end_height[i] < m.value;
       }
       out.push_back(count);
     } else {
