@@ -16,6 +16,13 @@ struct GlobalOptions {
   bool quiet = false;
 };
 
+// Thrown by a command whose error another process prints (every MPI rank of
+// a study reads the same study file and fails alike; rank 0 alone says so):
+// main() exits with `status` and prints nothing.
+struct ReportedElsewhere {
+  int status = 1;
+};
+
 void add_dl_command(CLI::App& app, const GlobalOptions& global);
 void add_dc_command(CLI::App& app, const GlobalOptions& global);
 void add_run_command(CLI::App& app, const GlobalOptions& global);

@@ -77,6 +77,8 @@ int main(int argc, char** argv) {
     // --help and --version are "errors" with exit code 0 in CLI11.
     const int code = app.exit(e);
     return code == 0 ? finish() : 2;
+  } catch (const dda::cli::ReportedElsewhere& e) {
+    return e.status;
   } catch (const dda::InputError& e) {
     std::cerr << "dda: " << e.what() << "\n";
     return 1;

@@ -88,6 +88,18 @@ MpiWorld::~MpiWorld() {
   if (initialised_) MPI_Finalize();
 }
 
+void MpiWorld::abort(int status) const {
+  if (initialised_) MPI_Abort(MPI_COMM_WORLD, status);
+  std::exit(status);
+}
+
+int MpiWorld::count_ranks(bool mine) const {
+  if (!initialised_) return mine ? 1 : 0;
+  int in = mine ? 1 : 0, total = 0;
+  MPI_Allreduce(&in, &total, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
+  return total;
+}
+
 std::vector<study::CaseRecord> run_pipeline_cases_mpi(const study::Study& study, const std::vector<study::Case>& cases,
                                                       const fs::path& outdir, const PoolOptions& options,
                                                       const MpiWorld& world) {
@@ -142,6 +154,32 @@ std::vector<study::CaseRecord> run_pipeline_cases_mpi(const study::Study& study,
   return records;
 }
 
+std::vector<study::CaseRecord> run_even_cases_mpi(std::size_t count, std::size_t measures,
+                                                  const std::function<study::CaseRecord(std::size_t)>& run_case,
+                                                  const MpiWorld& world) {
+  const auto rank = static_cast<std::size_t>(world.rank()), size = static_cast<std::size_t>(world.size());
+  if (rank != 0) {
+    nlohmann::json mine = nlohmann::json::array();
+    for (std::size_t i = rank; i < count; i += size) mine.push_back(study::record_json(run_case(i)));
+    send_text(mine.dump(), 0, kResult);
+    return {};
+  }
+  std::vector<study::CaseRecord> records(count);
+  for (std::size_t i = 0; i < count; i += size) records[i] = run_case(i);
+  for (std::size_t received = 1; received < size; ++received) {
+    const MPI_Status status = probe_politely();
+    const nlohmann::json theirs = nlohmann::json::parse(receive_text(status));
+    std::size_t i = static_cast<std::size_t>(status.MPI_SOURCE);
+    for (const nlohmann::json& j : theirs) {
+      const auto record = study::record_from_json(j, measures);
+      if (!record || i >= count) throw std::runtime_error("a rank sent case records that do not parse");
+      records[i] = *record;
+      i += size;
+    }
+  }
+  return records;
+}
+
 #else  // without MPI: a world of one
 
 MpiWorld::MpiWorld() {
@@ -156,8 +194,17 @@ MpiWorld::MpiWorld() {
 
 MpiWorld::~MpiWorld() = default;
 
+void MpiWorld::abort(int status) const { std::exit(status); }
+
+int MpiWorld::count_ranks(bool mine) const { return mine ? 1 : 0; }
+
 std::vector<study::CaseRecord> run_pipeline_cases_mpi(const study::Study&, const std::vector<study::Case>&,
                                                       const fs::path&, const PoolOptions&, const MpiWorld&) {
+  throw InputError("this dda was built without MPI.");
+}
+
+std::vector<study::CaseRecord> run_even_cases_mpi(std::size_t, std::size_t,
+                                                  const std::function<study::CaseRecord(std::size_t)>&, const MpiWorld&) {
   throw InputError("this dda was built without MPI.");
 }
 

@@ -9,6 +9,7 @@
 // when it is installed) and started by an MPI launcher; otherwise the world
 // is this one process. Nothing of MPI is seen outside study_mpi.cpp.
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -29,6 +30,11 @@ class MpiWorld {
   // The cores of this node shared among the ranks on it (Open MPI's
   // OMPI_COMM_WORLD_LOCAL_SIZE, Slurm's SLURM_NTASKS_PER_NODE), at least 1.
   int threads_per_rank() const;
+  // Ends every rank with `status` (MPI_Abort): for an error on one rank
+  // while the others may be waiting for it. Without MPI, exits this process.
+  [[noreturn]] void abort(int status) const;
+  // How many ranks have `mine` true (every rank calls it: MPI_Allreduce).
+  int count_ranks(bool mine) const;
 
  private:
   int rank_ = 0, size_ = 1;
@@ -46,5 +52,14 @@ bool built_with_mpi();
 std::vector<study::CaseRecord> run_pipeline_cases_mpi(const study::Study& study, const std::vector<study::Case>& cases,
                                                       const std::filesystem::path& outdir, const PoolOptions& options,
                                                       const MpiWorld& world);
+
+// Runs `count` cases of about equal cost (the in-process wedge cases, a few
+// microseconds each) across the world's ranks, rank r taking cases r,
+// r + size, ...: no handing out, one message a rank. Each record holds
+// `measures` values. Rank 0 returns the records of all cases in order, the
+// other ranks an empty list.
+std::vector<study::CaseRecord> run_even_cases_mpi(std::size_t count, std::size_t measures,
+                                                  const std::function<study::CaseRecord(std::size_t)>& run_case,
+                                                  const MpiWorld& world);
 
 }  // namespace dda::cli
