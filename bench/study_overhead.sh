@@ -3,7 +3,7 @@
 # not part of CI). Three measurements, each back to back in one session:
 #
 # 1. Pool overhead per case: N cases of a small scenario (the 2-block
-#    incline of tests/tools/cli_cases.sh, its forward run of T seconds of
+#    incline of the CLI tests, tests/tools/incline_scenario.py, run for T s of
 #    model time), run as N plain `dda run` one after another (printing to
 #    a log, as a study's case does), and as `dda study -j 1` of the same N
 #    cases (N seeds), three times each, interleaved. The overhead per case
@@ -22,25 +22,7 @@ work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 cd "$work"
 
-/usr/bin/python3 - "$total_time" > incline.yaml <<'PY'
-import math, sys
-a = math.radians(30)
-def r(x, y): return [round(math.cos(a)*x - math.sin(a)*y, 12), round(math.sin(a)*x + math.cos(a)*y, 12)]
-poly = [r(*p) for p in [(0, -1), (8, -1), (8, 0), (7, 0), (7, 1), (6, 1), (6, 0), (0, 0)]]
-print("name: incline\nseed: 3")
-print("domain: {polygon: %s}" % poly)
-print("lines:\n  - {set: interface, from: %s, to: %s}" % (r(6, 0), r(7, 0)))
-print("points:")
-for i, x in enumerate([0.5, 4.0, 7.5]): print("  - {name: base%d, kind: fixed, at: %s}" % (i + 1, r(x, -0.5)))
-print("  - {name: slider, kind: measurement, at: %s}" % r(6.5, 0.5))
-print("""materials:
-  default: {density: 2000, young: 5.0e10, poisson: 0.25, plane: stress}
-joints:
-  default: {friction_deg: 45}
-  interface: {friction_deg: 20}
-control: {dt: 0.001, total_time: %s, output_interval: 0.25}
-output: {vtk: false, plots: false}""" % sys.argv[1])
-PY
+/usr/bin/python3 "$root/tests/tools/incline_scenario.py" "$total_time" > incline.yaml
 cat > study.yaml <<YAML
 scenario: incline.yaml
 seeds: $n

@@ -204,26 +204,7 @@ case_sliver_override() {
 # fixed points), phi = 20 degrees, 1 s under gravity. Built in the slope
 # frame and rotated; a second measurement point rides in the slab.
 write_incline() {
-  /usr/bin/python3 - "$@" > incline.yaml <<'PY'
-import math
-a = math.radians(30)
-def r(x, y): return [round(math.cos(a)*x - math.sin(a)*y, 12), round(math.sin(a)*x + math.cos(a)*y, 12)]
-poly = [r(*p) for p in [(0, -1), (8, -1), (8, 0), (7, 0), (7, 1), (6, 1), (6, 0), (0, 0)]]
-print("name: incline\nseed: 3")
-print("domain: {polygon: %s}" % poly)
-print("lines:\n  - {set: interface, from: %s, to: %s}" % (r(6, 0), r(7, 0)))
-print("points:")
-for i, x in enumerate([0.5, 4.0, 7.5]): print("  - {name: base%d, kind: fixed, at: %s}" % (i + 1, r(x, -0.5)))
-print("  - {name: slider, kind: measurement, at: %s}" % r(6.5, 0.5))
-print("  - {name: slab, kind: measurement, at: %s}" % r(2.0, -0.5))
-print("""materials:
-  default: {density: 2000, young: 5.0e10, poisson: 0.25, plane: stress}
-joints:
-  default: {friction_deg: 45}
-  interface: {friction_deg: 20}
-control: {dt: 0.001, total_time: 1.0, output_interval: 0.25}
-output: {vtk: true, plots: false}""")
-PY
+  /usr/bin/python3 "$SRC/tests/tools/incline_scenario.py" > incline.yaml || fail "write the incline scenario"
 }
 
 # The incline scenario and its blocks file (blocks.h5), cut by dl and dc.
