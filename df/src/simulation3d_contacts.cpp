@@ -10,6 +10,7 @@
 #include <numbers>
 
 #include "dda/df/broad_phase3d.hpp"
+#include "dda/df/block_system.hpp"
 #include "dda/df/simulation3d.hpp"
 #include "simulation3d_assembly.hpp"
 
@@ -236,10 +237,14 @@ void detect_contacts3(const std::vector<Polyhedron>& blocks, const std::vector<C
   // below: pairs stay in (a, b) order, so the result is the same with any
   // number of threads.
   std::vector<std::vector<PolyEdge>> edges(static_cast<std::size_t>(n));
-#pragma omp parallel for schedule(static)
+  // Small models on one thread: waking a second one costs more than their
+  // whole search, and on a busy machine far more (docs/solver2d.md,
+  // "Threads for small models").
+  const bool threads = n > df::parallel_grain();
+#pragma omp parallel for schedule(static) if (threads)
   for (int a = 0; a < n; ++a) edges[a] = polyhedron_edges(blocks[a]);
   std::vector<std::vector<Contact3>> found(static_cast<std::size_t>(n));
-#pragma omp parallel for schedule(dynamic, 8)
+#pragma omp parallel for schedule(dynamic, 8) if (threads)
   for (int a = 0; a < n; ++a) {
     std::vector<Contact3>& of_a = found[a];
     for (std::size_t p = first_pair[a]; p < first_pair[a + 1]; ++p) {
@@ -259,7 +264,7 @@ void detect_contacts3(const std::vector<Polyhedron>& blocks, const std::vector<C
   std::vector<std::size_t> first(static_cast<std::size_t>(n) + 1, 0);
   for (int a = 0; a < n; ++a) first[a + 1] = first[a] + found[a].size();
   out.resize(first[n]);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (threads)
   for (int a = 0; a < n; ++a) std::copy(found[a].begin(), found[a].end(), out.begin() + first[a]);
 }
 
