@@ -86,11 +86,10 @@ void write_frames(h5::Writer& w, const std::vector<Frame3>& frames, std::size_t 
   h5::Id g = w.group("frames");
   w.attr_text(g.get(), "description", "block states at the output interval; frame 0 is the start of the run");
   std::vector<std::int32_t> step;
-  std::vector<double> time, verts, vel, stress, kinetic;
+  std::vector<double> time, verts, vel, stress;
   for (const Frame3& f : frames) {
     step.push_back(f.step);
     time.push_back(f.time);
-    kinetic.push_back(f.kinetic_energy);
     const std::vector<double> v = flat(f.vertices), u = flat12(f.velocity), s = flat6(f.stress);
     verts.insert(verts.end(), v.begin(), v.end());
     vel.insert(vel.end(), u.begin(), u.end());
@@ -103,7 +102,6 @@ void write_frames(h5::Writer& w, const std::vector<Frame3>& frames, std::size_t 
   w.f64(g.get(), "velocity", vel, {nf, nb, kDofs}, "m/s, rad/s, 1/s",
         std::string("end velocity of each block: ") + kVelocityColumns);
   w.f64(g.get(), "stress", stress, {nf, nb, 6}, "Pa", std::string("stress of each block: ") + kStressColumns);
-  w.f64(g.get(), "kinetic_energy", kinetic, {nf}, "J", "kinetic energy of the free blocks, 1/2 v^T M v summed");
 }
 
 // --------------------------------------------------------------- reading
@@ -137,10 +135,6 @@ void read_log(const h5::Reader& r, Results3& out) {
 
 void read_frames(const h5::Reader& r, Results3& out) {
   df::h5io::read_frame_series(r, out.blocks.blocks, out.frames);
-  out.has_kinetic_energy = r.exists("/frames/kinetic_energy");
-  if (!out.has_kinetic_energy) return;
-  const auto kinetic = read_f64(r, "/frames/kinetic_energy", {out.frames.size()});
-  for (std::size_t f = 0; f < out.frames.size(); ++f) out.frames[f].kinetic_energy = kinetic[f];
 }
 
 }  // namespace
@@ -156,6 +150,7 @@ void write_results3_h5(const std::string& path, const Results3& results, const S
   w.i32(w.file(), "fixed", fixed, "", "1 for a block held fixed in the run (no unknowns), one per block of /model");
   write_series(w, sim);
   write_steps(w, sim.log());
+  df::h5io::write_energy(w, sim.energy_log(), "J");
   std::size_t nv = 0;
   for (const Polyhedron& b : sim.blocks()) nv += b.vertices.size();
   write_frames(w, results.frames, nv, sim.blocks().size());
@@ -173,6 +168,8 @@ Results3 read_results3_h5(const std::string& path, const df::ResultsParts& parts
   out.complete = root.complete;
   if (parts.series) read_series(r, out);
   if (parts.log) read_log(r, out);
+  // Files written before the 3D energy ledger have none.
+  if (parts.energy && r.exists("/energy/time")) out.energy = df::h5io::read_energy(r);
   const std::size_t nb = length(r, "/fixed");
   for (const std::int64_t f : read_i64(r, "/fixed", nb)) out.fixed.push_back(f != 0);
   if (!parts.frames) return out;
@@ -185,6 +182,7 @@ Results3 read_results3_h5(const std::string& path, const df::ResultsParts& parts
   Simulation3State s = read_checkpoint3(r, counts);
   s.log = out.log;
   s.histories = out.histories;
+  s.energy_log = out.energy;
   out.checkpoint = std::move(s);
   return out;
 }

@@ -38,7 +38,6 @@ Frame3 make_frame(const Simulation3& sim) {
   for (const Polyhedron& b : sim.blocks()) f.vertices.insert(f.vertices.end(), b.vertices.begin(), b.vertices.end());
   f.velocity = sim.velocities();
   f.stress = sim.stresses();
-  f.kinetic_energy = sim.kinetic_energy();
   return f;
 }
 

@@ -126,4 +126,63 @@ void write_points(h5::Writer& w, const std::vector<std::string>& names, const st
   w.f64(g.get(), "initial", initial, {names.size(), dim}, "m", "position at the start of the run");
 }
 
+void write_energy(h5::Writer& w, const std::vector<EnergyRecord>& log, const std::string& unit) {
+  h5::Id g = w.group("energy");
+  w.attr_text(g.get(), "description",
+              "energy ledger (" + unit + "): record 0 is the start of the run, then one per step; "
+              "stored energies at the end of the step, work and losses cumulative (see df/energy.hpp)");
+  const std::vector<hsize_t> n{log.size()};
+  auto col = [&](const char* name, auto get, const char* what) {
+    std::vector<double> v;
+    v.reserve(log.size());
+    for (const EnergyRecord& e : log) v.push_back(get(e));
+    w.f64(g.get(), name, v, n, std::string(name) == "time" ? "s" : "J", what);
+  };
+  col("time", [](const EnergyRecord& e) { return e.time; }, "time of the record");
+  col("kinetic", [](const EnergyRecord& e) { return e.kinetic; }, "kinetic energy of the start velocities of the next step");
+  col("elastic", [](const EnergyRecord& e) { return e.elastic; }, "block strain energy");
+  col("contact", [](const EnergyRecord& e) { return e.contact; }, "energy in the contact penalty springs");
+  col("fixed", [](const EnergyRecord& e) { return e.fixed; }, "energy in the fixed-point springs");
+  col("bolts", [](const EnergyRecord& e) { return e.bolts; }, "energy in the bolts");
+  col("gravity_work", [](const EnergyRecord& e) { return e.gravity_work; }, "work of gravity, cumulative");
+  col("load_work", [](const EnergyRecord& e) { return e.load_work; },
+      "work of point loads and moving fixed points, cumulative");
+  col("friction", [](const EnergyRecord& e) { return e.friction; }, "friction dissipation, cumulative");
+  col("damping", [](const EnergyRecord& e) { return e.damping; }, "kinetic energy removed by dynamic < 1 and work of the viscous damping (control.damping), cumulative");
+  col("breakage", [](const EnergyRecord& e) { return e.breakage; }, "energy released by broken bolts, cumulative");
+  col("radiation", [](const EnergyRecord& e) { return e.radiation; },
+      "energy absorbed by the viscous boundaries, cumulative");
+  col("residual", [](const EnergyRecord& e) { return e.residual; },
+      "input - change of stored - friction - damping - breakage - radiation: what the integrator and penalties "
+      "dissipate");
+}
+
+std::vector<EnergyRecord> read_energy(const h5::Reader& r) {
+  const std::size_t n = length(r, "/energy/time");
+  auto col = [&](const char* name) { return read_f64(r, std::string("/energy/") + name, {n}); };
+  const auto time = col("time"), kinetic = col("kinetic"), elastic = col("elastic"), contact = col("contact"),
+             fixed = col("fixed"), bolts = col("bolts"), gravity = col("gravity_work"), load = col("load_work"),
+             friction = col("friction"), damping = col("damping"), breakage = col("breakage"),
+             residual = col("residual");
+  const auto radiation = r.exists("/energy/radiation") ? col("radiation") : std::vector<double>(n, 0.0);
+  std::vector<EnergyRecord> out(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    EnergyRecord& e = out[i];
+    e.time = time[i];
+    e.kinetic = kinetic[i];
+    e.elastic = elastic[i];
+    e.contact = contact[i];
+    e.fixed = fixed[i];
+    e.bolts = bolts[i];
+    e.gravity_work = gravity[i];
+    e.load_work = load[i];
+    e.friction = friction[i];
+    e.damping = damping[i];
+    e.breakage = breakage[i];
+    e.radiation = radiation[i];
+    e.residual = residual[i];
+  }
+  return out;
+}
+
 }  // namespace dda::df::h5io

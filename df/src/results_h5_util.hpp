@@ -10,6 +10,7 @@
 #include "dda/common/geometry.hpp"
 #include "dda/common/geometry3.hpp"
 #include "dda/common/h5_util.hpp"
+#include "dda/df/energy.hpp"
 #include "dda/df/linear_solver.hpp"
 #include "dda/df/results.hpp"
 
@@ -71,6 +72,13 @@ void write_step_columns(h5::Writer& w, hid_t g, const std::vector<Record>& log, 
   w.f64(g, "max_displacement", reals([](const Record& r) { return r.max_displacement; }), n, "m",
         "largest vertex displacement of the step");
 }
+
+// /energy: the energy ledger, one column per EnergyRecord field (energy.hpp);
+// `unit` is how its energies are counted ("J per unit thickness" in 2D).
+void write_energy(h5::Writer& w, const std::vector<EnergyRecord>& log, const std::string& unit);
+// The inverse (a file without /energy/radiation, written before viscous
+// boundaries existed, reads zero radiation).
+std::vector<EnergyRecord> read_energy(const h5::Reader& r);
 
 // <checkpoint>/solver: an iterative solver's warm start (its last solution
 // and the step it was for; empty for direct solvers), which a resumed run

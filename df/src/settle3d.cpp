@@ -88,6 +88,7 @@ void Simulation3::settle() {
   log_.clear();
   for (auto& h : histories_) h.clear();
   sample_measurements();
+  start_energy();  // the ledger counts from the state the run starts from
 }
 
 }  // namespace dda::df3

@@ -97,6 +97,7 @@ Simulation3::Simulation3(Model3 model)
     throw std::invalid_argument("Model3: an earthquake needs its mode (loading or displacement)");
   make_friction_laws();
   index_points();
+  start_energy();
   // w0: half the largest side of the model's bounding box (the 2D solver
   // takes half the height); it scales the displacement limit of a step.
   Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
@@ -351,7 +352,9 @@ StepInfo3 Simulation3::record(double dt, const std::vector<Vector12d>& d, double
   info.converged = converged;
   info.dt_cuts = cuts;
   info.max_displacement = moved;
+  add_step_work(d, dt);
   finish_step(d, dt);
+  close_energy_record();
   info.time = time_;
   for (const Contact3& c : contacts_) {
     if (c.state == ContactState3::Open) ++info.open;

@@ -1,6 +1,5 @@
 // Fixed points, point loads and measurement points of the 3D step
-// (points3d.hpp, simulation3d.hpp), and the kinetic energy the results
-// report with each frame.
+// (points3d.hpp, simulation3d.hpp).
 #include <string>
 
 #include "dda/common/error.hpp"
@@ -71,16 +70,6 @@ void Simulation3::sample_measurements() {
     s.stress = stress_[b];
     histories_[p].push_back(s);
   }
-}
-
-double Simulation3::kinetic_energy() const {
-  double energy = 0;
-  for (std::size_t b = 0; b < model_.blocks.size(); ++b) {
-    if (dof_[b] < 0) continue;  // fixed, or moved by the ground: no unknowns
-    const Matrix12d m = mass_matrix(block_geometry(model_.blocks[b]), model_.material_of(b).density);
-    energy += 0.5 * velocity_[b].dot(m * velocity_[b]);
-  }
-  return energy;
 }
 
 }  // namespace dda::df3

@@ -17,6 +17,7 @@ Simulation3State Simulation3::state() const {
   s.load_at = load_at_;
   s.measure_at = measure_at_;
   s.histories = histories_;
+  s.energy_log = energy_log_;
   s.solver_warm_start = solver_->warm_start();
   s.started = started_;
   return s;
@@ -48,6 +49,13 @@ void Simulation3::restore(const Simulation3State& s) {
   histories_ = s.histories;
   solver_->set_warm_start(s.solver_warm_start);
   started_ = s.started;
+  // A checkpoint written before the 3D ledger has none: it counts from here.
+  if (s.energy_log.empty()) {
+    start_energy();
+  } else {
+    energy_log_ = s.energy_log;
+    energy_start_ = energy_log_.front();
+  }
 }
 
 }  // namespace dda::df3

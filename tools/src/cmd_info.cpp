@@ -60,7 +60,7 @@ void add_info_command(CLI::App& app, const GlobalOptions&) {
                 << " blocks, " << r.log.size() << " steps to t = " << t_end << " s, "
                 << r.point_names.size() << " measurement points, " << r.bolt_names.size() << " bolts, "
                 << (r.complete ? "complete" : "incomplete (resume with `dda df --resume`)") << "\n";
-      std::cout << "energy:          " << energy_balance_line(r.energy) << "\n";
+      std::cout << "energy:          " << energy_balance_line(r.energy, "J per m of thickness") << "\n";
       if (const std::string w = energy_created_warning(r.energy); !w.empty()) std::cout << "warning:         " << w << "\n";
       print_provenance(r.source.provenance);
       if (*show_scenario) std::cout << "\n" << r.source.provenance.scenario_text;
@@ -74,6 +74,12 @@ void add_info_command(CLI::App& app, const GlobalOptions&) {
                 << " measurement points, "
                 << (r.complete ? "complete" : "incomplete (resume with `dda df --resume`)") << "\n";
       std::cout << "blocks from:     " << (r.source.blocks_path.empty() ? "(unknown)" : r.source.blocks_path) << "\n";
+      if (r.energy.empty()) {
+        std::cout << "energy:          not recorded (the file was written before the 3D energy ledger)\n";
+      } else {
+        std::cout << "energy:          " << energy_balance_line(r.energy, "J") << "\n";
+        if (const std::string w = energy_created_warning(r.energy); !w.empty()) std::cout << "warning:         " << w << "\n";
+      }
       print_provenance(r.source.provenance);
       if (*show_scenario) std::cout << "\n" << r.source.provenance.scenario_text;
     } else {

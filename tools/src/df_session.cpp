@@ -216,7 +216,7 @@ std::string percent(double r) {
 }
 }  // namespace
 
-std::string energy_balance_line(const std::vector<df::EnergyRecord>& log) {
+std::string energy_balance_line(const std::vector<df::EnergyRecord>& log, const std::string& unit) {
   if (log.size() < 2) return "no steps";
   const df::EnergyRecord& e = log.back();
   const double scale = df::energy_moved(log.front(), e);
@@ -224,7 +224,7 @@ std::string energy_balance_line(const std::vector<df::EnergyRecord>& log) {
          joules(e.stored() - log.front().stored()) + " more than at the start, losses " + joules(e.losses()) +
          " (friction, damping, bolts, radiation), residual " + joules(e.residual) + " (" +
          percent(scale > 0 ? e.residual / scale : 0.0) +
-         " of the energy moved; what the penalty springs and the implicit step dissipate, J per m of thickness)";
+         " of the energy moved; what the penalty springs and the implicit step dissipate, " + unit + ")";
 }
 
 std::string energy_created_warning(const std::vector<df::EnergyRecord>& log) {

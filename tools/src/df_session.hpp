@@ -105,7 +105,8 @@ void report_run_end(df::RunEnd end, const std::string& summary, const DfStage& s
 // the energy moved)"), and a warning sentence when the run created more
 // energy than df::kEnergyCreatedWarning of what it moved (empty otherwise;
 // see df::most_energy_created).
-std::string energy_balance_line(const std::vector<df::EnergyRecord>& log);
+// `unit` says how the energies count: "J per m of thickness" in 2D, "J" in 3D.
+std::string energy_balance_line(const std::vector<df::EnergyRecord>& log, const std::string& unit);
 std::string energy_created_warning(const std::vector<df::EnergyRecord>& log);
 
 // A number in its shortest usual form.

@@ -71,12 +71,11 @@ std::vector<Vec3> centroids(const df3::Frame3& frame, const PolyhedronModel& blo
 // The parts of results.h5 the measures read. A long run's file is mostly
 // its per-step records; a point's history is a tenth of it (the 2D incline
 // of bench/study_overhead.sh: 26 MB in all).
-df::ResultsParts parts_for(const std::vector<study::MeasureSpec>& measures, bool three_d) {
+df::ResultsParts parts_for(const std::vector<study::MeasureSpec>& measures) {
   df::ResultsParts parts = df::ResultsParts::none();
   for (const study::MeasureSpec& m : measures) {
     if (m.kind == "point_displacement") parts.series = true;
-    // 2D keeps the kinetic energy in its energy record, 3D with each frame.
-    if (m.kind == "kinetic_energy") (three_d ? parts.frames : parts.energy) = true;
+    if (m.kind == "kinetic_energy") parts.energy = true;
     if (m.kind == "blocks_displaced" || m.kind == "blocks_below") parts.frames = true;
   }
   return parts;
@@ -118,12 +117,12 @@ void take_frames(const Frames& frames, const Blocks& blocks, RunMeasures& out) {
 RunMeasures read_run_measures(const std::string& path, const std::vector<study::MeasureSpec>& measures) {
   RunMeasures out;
   if (h5_format_of(path) == df3::kResults3dFormat) {
-    const df3::Results3 r = df3::read_results3_h5(path, parts_for(measures, true));
+    const df3::Results3 r = df3::read_results3_h5(path, parts_for(measures));
     take_points(r, out);
-    if (!r.frames.empty() && r.has_kinetic_energy) out.final_kinetic_energy = r.frames.back().kinetic_energy;
+    if (!r.energy.empty()) out.final_kinetic_energy = r.energy.back().kinetic;
     take_frames(r.frames, r.blocks, out);
   } else {
-    const df::Results r = df::read_results_h5(path, parts_for(measures, false));
+    const df::Results r = df::read_results_h5(path, parts_for(measures));
     take_points(r, out);
     if (!r.energy.empty()) out.final_kinetic_energy = r.energy.back().kinetic;
     take_frames(r.frames, r.blocks, out);
@@ -163,7 +162,7 @@ std::vector<double> pipeline_measures(const fs::path& case_dir, const std::vecto
     } else if (m.kind == "kinetic_energy") {
       if (!run->final_kinetic_energy)
         throw InputError(results_path + ": holds no kinetic energy for the measure '" + m.name +
-                         "' (a 3D results file written before its frames kept it; run the case again).");
+                         "' (a 3D results file written before the 3D energy ledger; run the case again).");
       out.push_back(*run->final_kinetic_energy);
     } else if (m.kind == "blocks_displaced" || m.kind == "blocks_below") {
       if (!run->has_frames) throw InputError(results_path + ": holds no block frames for the measure '" + m.name + "'.");

@@ -1,7 +1,8 @@
 #pragma once
 #include <vector>
 
-// Energy bookkeeping of a run (J per unit thickness), one record per step.
+// Energy bookkeeping of a run (J per unit thickness in 2D, J in 3D), one
+// record per step; the 3D terms are those of simulation3d_energy.cpp.
 //
 // Stored energy: kinetic (of the velocities the next step starts from),
 // elastic (block strain energy S/2 sigma^T E^-1 sigma), contact (penalty

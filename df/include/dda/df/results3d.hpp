@@ -26,7 +26,6 @@ struct Frame3 {
   std::vector<Vec3> vertices;        // all blocks one after another (block order)
   std::vector<Vector12d> velocity;   // per block: end velocity of the last step (the twelve rates)
   std::vector<Vector6d> stress;      // per block: [sx sy sz tyz tzx txy], Pa
-  double kinetic_energy = 0;         // J, of the free blocks (Simulation3::kinetic_energy)
 };
 Frame3 make_frame(const Simulation3& sim);
 
@@ -35,7 +34,6 @@ struct Results3 {
   PolyhedronModel blocks;              // the blocks the run started from
   df::OutputSchedule output;           // resolved
   std::vector<Frame3> frames;          // frame 0 is the initial state
-  bool has_kinetic_energy = false;     // the frames hold it (files written before it was added do not)
 
   // Filled by read_results3_h5 (the writer takes them from the Simulation3).
   bool complete = false;
@@ -44,6 +42,7 @@ struct Results3 {
   std::vector<bool> fixed;               // per block: held fixed in the run
   std::vector<StepInfo3> log;
   std::vector<std::vector<MeasurementSample3>> histories;  // per point; sample 0 is the initial state
+  std::vector<df::EnergyRecord> energy;  // record 0 is the initial state, then one per step; empty in older files
   std::optional<Simulation3State> checkpoint;
 };
 
@@ -51,8 +50,9 @@ struct Results3 {
 void write_results3_h5(const std::string& path, const Results3& results, const Simulation3& sim, bool complete);
 
 // Reads a 3D results file, the parts asked for (df::ResultsParts; a 3D file
-// has no energy record or bolts); InputError naming the file for anything
-// wrong in what it reads. The root attributes and /fixed are always read.
+// has no bolts, and files written before the 3D energy ledger no energy
+// record); InputError naming the file for anything wrong in what it reads.
+// The root attributes and /fixed are always read.
 Results3 read_results3_h5(const std::string& path, const df::ResultsParts& parts = df::ResultsParts::all());
 
 // ParaView: the blocks as VTK_POLYHEDRON cells at their current position

@@ -27,6 +27,7 @@
 #include "dda/df/block3d.hpp"
 #include "dda/df/contact3d_geometry.hpp"
 #include "dda/df/damping.hpp"
+#include "dda/df/energy.hpp"
 #include "dda/df/friction.hpp"
 #include "dda/df/ground_motion3.hpp"
 #include "dda/df/points3d.hpp"
@@ -207,6 +208,7 @@ struct Simulation3State {
   std::vector<StepInfo3> log;
   std::vector<Vec3> fixed_at, load_at, measure_at;
   std::vector<std::vector<MeasurementSample3>> histories;
+  std::vector<df::EnergyRecord> energy_log;       // the ledger; empty in files written before it
   df::LinearSolver::WarmStart solver_warm_start;  // PCG's start vector (empty for CHOLMOD)
   bool started = false;                           // initial equilibrium done (or not asked for)
 };
@@ -240,11 +242,12 @@ class Simulation3 {
   const std::vector<Polyhedron>& blocks() const { return model_.blocks; }
   const std::vector<Vector12d>& velocities() const { return velocity_; }
   const std::vector<Vector6d>& stresses() const { return stress_; }
-  // J: 1/2 v^T M v of every free block at its end velocity and place (the
-  // twelve rates, rigid and strain; block3d.hpp's mass matrix). Not kept in
-  // the step log: it costs a volume integration of every block, so results
-  // take it with each frame.
+  // J: 1/2 v^T M v of every free block at its velocity and place now (the
+  // twelve rates, rigid and strain; block3d.hpp's mass matrix).
   double kinetic_energy() const;
+  // The energy ledger (df/energy.hpp; J): record 0 is the state the run
+  // starts from (after the start-up relaxation), then one per accepted step.
+  const std::vector<df::EnergyRecord>& energy_log() const { return energy_log_; }
   const std::vector<Contact3>& contacts() const { return contacts_; }
   const Model3& model() const { return model_; }
   // Per measurement point (model order): sample 0 at the start, then one per step.
@@ -309,6 +312,14 @@ class Simulation3 {
   void index_points();
   void add_point_terms(int b, double dt, const BlockGeometry3& g, Matrix12d& k, Vector12d& f) const;
   void sample_measurements();
+  // The energy ledger (simulation3d_energy.cpp): started afresh from the
+  // current state; a step's work and losses, taken from the configuration
+  // at its start with the forces as assembled (before finish_step moves the
+  // blocks); then the stored energy at its end and the residual.
+  void start_energy();
+  void add_step_work(const std::vector<Vector12d>& d, double dt);
+  void close_energy_record();
+  void store_energy(df::EnergyRecord& e) const;
   // The law the open-close iteration uses: the joint's, or while the model
   // settles with its contacts stuck, one that never lets go.
   const df::FrictionLaw& law_of(const Contact3& c) const {
@@ -334,6 +345,8 @@ class Simulation3 {
   // searches ago, and the contacts at the start of advance()'s step.
   std::vector<Contact3> spare_contacts_, start_contacts_;
   std::vector<StepInfo3> log_;
+  std::vector<df::EnergyRecord> energy_log_;
+  df::EnergyRecord energy_start_;  // the stored energy the ledger counts changes from
   double dt_ = 0;   // current step of advance()
   double w0_ = 1;   // m, the reference length of the displacement limit
   std::vector<std::unique_ptr<df::FrictionLaw>> friction_;
