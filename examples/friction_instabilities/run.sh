@@ -4,8 +4,11 @@
 # rate-and-state, Stribeck and slip-weakening friction, each on both sides
 # of its law's stability limit, and a stability map of the rate-and-state
 # slider (load-point speed against stiffness) against Rice and Ruina's
-# boundary. Figures and a summary (analyse.py; exit status 1 if a run
-# disagrees with the theory it is set against). About half a minute on two cores.
+# boundary. Then the slab: a flexible slab of bonded blocks pressed on a
+# plane and dragged through a spring, slip weakening on its base, stiff and
+# flexible, below and above the rigid critical stiffness (make_slab.py).
+# Figures and summaries (analyse.py, analyse_slab.py; exit status 1 if a run
+# disagrees with the theory it is set against). About a minute on two cores.
 # Environment: DDA (the program; default dda on PATH, else build/bin/dda), OUT (output folder;
 # default examples/friction_instabilities/out).
 set -euo pipefail
@@ -46,5 +49,13 @@ for case in "${cases[@]}"; do
   echo "== $name"
   "$DDA" run "$OUT/scenarios/$name.yaml" -o "$OUT/$name" -q
 done
-# The summary it prints is saved for scripts/check_readme_numbers.py.
-/usr/bin/python3 "$here/analyse.py" "$OUT" | tee "$OUT/summary.txt"
+/usr/bin/python3 "$here/make_slab.py" "$OUT/scenarios"
+for name in slab_flexible_half slab_flexible_twice slab_stiff_half slab_stiff_twice; do
+  echo "== $name"
+  "$DDA" run "$OUT/scenarios/$name.yaml" -o "$OUT/$name" -q
+done
+# The summaries they print are saved for scripts/check_readme_numbers.py.
+status=0
+/usr/bin/python3 "$here/analyse.py" "$OUT" | tee "$OUT/summary.txt" || status=1
+/usr/bin/python3 "$here/analyse_slab.py" "$OUT" | tee "$OUT/slab_summary.txt" || status=1
+exit $status

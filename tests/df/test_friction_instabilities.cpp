@@ -133,13 +133,20 @@ TEST(FrictionInstability, RateStateBelowCriticalStiffnessSticksAndSlips) {
   // of the same equations (RK4, h = 10 us; h = 2 us gives the same to 1e-4).
   // Measured at dt = 0.1 ms: period 3.728 s against 3.929 (-5.1 %),
   // stress drop 0.0801 W against 0.0858 W (-6.6 %), peak speed 23.8 vd
-  // against 25.7 vd (-7.3 %). The step matters (measured on the example's
-  // scenario when this test was written): at dt = 1 ms the period of the
-  // first cycle was 14 % short, at 0.3 ms 6 %, at 0.1 ms 3 %; steps
-  // finer than 0.1 ms resolve the slider's rocking on its contact springs
-  // (about 3e4 rad/s), which the friction then excites (at 25 us the events
-  // reached only 14 vd), so 0.1 ms is the step to use and 8 % / 10 % are the
-  // tolerances that step supports (docs/friction.md, "Instabilities").
+  // against 25.7 vd (-7.3 %). Why DDA is short (examples/
+  // friction_instabilities, "Time step", measured when this comment was
+  // written): the last cycle's period is 2.903, 3.599 and 3.724 s at dt =
+  // 1, 0.3 and 0.1 ms, converging to about 3.74-3.79 s, not 3.93. In the
+  // stick phase the direct integration creeps at 0.1-1 % of vd; DDA's
+  // fixed-point iteration between mu(V) and the step's speed contracts only
+  // above V = N a dt / (2 m) = 0.5 % of vd at 0.1 ms, so there it runs to
+  // its limit (576 of 101 927 steps), the slip speed jitters at 1-6 % of vd
+  // and theta, aging with |V|, heals at 0.85 instead of 0.99 per second: a
+  // weaker healed contact, a smaller event, a shorter cycle. Steps finer
+  // than 0.1 ms resolve the slider's rocking on its contact springs (about
+  // 3e4 rad/s), which the friction then excites (at 30 us no clean cycle is
+  // left), so 0.1 ms is the step to use and 8 % / 10 % are the gaps it
+  // leaves (docs/friction.md, "Instabilities").
   const double k = 0.5 * kKc, u0 = 0.55 * kWeight / k, t_end = 10;
   const Cycles dda = cycles(dda_run(slider(rate_state_joint(), k, 1e-4, u0), kVd, t_end), 3 * kVd);
   const Cycles ode = cycles(test::integrate(rate_state_ode(k, u0), t_end, 1e-5, 1e-4), 3 * kVd);
