@@ -8,7 +8,9 @@
 # plane and dragged through a spring, slip weakening on its base, stiff and
 # flexible, below and above the rigid critical stiffness (make_slab.py).
 # Figures and summaries (analyse.py, analyse_slab.py; exit status 1 if a run
-# disagrees with the theory it is set against). About a minute on two cores.
+# disagrees with the theory it is set against). About a minute on two cores;
+# the output takes about 380 MB, nearly all of it the slab runs, which keep
+# a frame every step (make_slab.py).
 # Environment: DDA (the program; default dda on PATH, else build/bin/dda), OUT (output folder;
 # default examples/friction_instabilities/out).
 set -euo pipefail
