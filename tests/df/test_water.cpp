@@ -1,0 +1,208 @@
+// Joint water (df/include/dda/df/water.hpp, docs/formulation.md "Joint
+// water"): the pore pressure's integral over joint faces against hand
+// integrals, and a 2D block on an incline with a water table against the
+// effective-stress limit equilibrium
+//   FS = (W cos a - U) tan phi / (W sin a),
+// U the water force on its base (the block's free faces are not loaded:
+// the model's assumption, docs/formulation.md).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "df_test_models.hpp"
+#include "dda/df/simulation.hpp"
+#include "dda/df/water.hpp"
+
+namespace dda::df {
+namespace {
+
+constexpr double kGammaW = 9810;  // N/m^3, 1000 kg/m^3 x 9.81 m/s^2
+
+// ---- the integral of u over a face ---------------------------------------
+
+TEST(WaterPressure, SubmergedSegmentCarriesMeanDepthTimesLength) {
+  // Level 10; a segment from (0, 2) to (4, 5) (length 5): depths 8 and 5,
+  // linear in between, so U = gamma_w * 5 * (8 + 5) / 2 = 318 825 N/m and
+  // the centre lies at the depth-weighted point: s = L (d0 + 2 d1) / (3 (d0 + d1))
+  // from the first end = 5 * 18 / 39.
+  WaterTable<2> w;
+  w.level = 10;
+  const PressureResultant<2> r = pressure_on_segment(w, {0, 2}, {4, 5});
+  EXPECT_NEAR(r.force, kGammaW * 5 * 6.5, 1e-9 * r.force);
+  const double s = 5.0 * 18.0 / 39.0;
+  EXPECT_NEAR((r.centre - Eigen::Vector2d(0, 2)).norm(), s, 1e-12);
+}
+
+TEST(WaterPressure, SegmentCrossingTheTableIsLoadedBelowItOnly) {
+  // A vertical face from z = 0 to z = 1, level 0.5: the triangle of
+  // pressure gamma_w d over d in [0, 0.5] gives gamma_w 0.5^2 / 2 =
+  // 1226.25 N/m, acting a third of the wet height above its foot (z = 1/6).
+  WaterTable<2> w;
+  w.level = 0.5;
+  const PressureResultant<2> r = pressure_on_segment(w, {3, 0}, {3, 1});
+  EXPECT_NEAR(r.force, 1226.25, 1e-9);
+  EXPECT_NEAR(r.centre.y(), 1.0 / 6.0, 1e-12);
+  EXPECT_NEAR(r.centre.x(), 3.0, 1e-12);
+  // Dry: a face above the table carries nothing.
+  EXPECT_EQ(pressure_on_segment(w, {0, 0.6}, {1, 2}).force, 0.0);
+}
+
+TEST(WaterPressure, PolylineSurfaceIsIntegratedPieceByPiece) {
+  // Surface through (0, 1), (1, 3), (2, 1): over the horizontal face z = 0,
+  // x in [0, 2], the head is a tent of height 1..3, so U = gamma_w * (area
+  // under the tent) = gamma_w * 4 (two trapezoids of mean 2 and width 1),
+  // centred at x = 1 by symmetry. A midpoint rule written here agrees.
+  WaterTable<2> w;
+  w.knots = {{0, 1}, {1, 3}, {2, 1}};
+  const PressureResultant<2> r = pressure_on_segment(w, {0, 0}, {2, 0});
+  EXPECT_NEAR(r.force, kGammaW * 4, 1e-9 * r.force);
+  EXPECT_NEAR(r.centre.x(), 1.0, 1e-12);
+  // Outside the knots the head holds the end value (1): 1 m to the left.
+  EXPECT_NEAR(pressure_on_segment(w, {-1, 0}, {0, 0}).force, kGammaW * 1, 1e-6);
+}
+
+TEST(WaterPressure, PolygonAgreesWithAMidpointRule) {
+  // A 2 x 2 square tilted 30 degrees about the x axis, its lowest edge at
+  // z = 0, under a plane surface h = 1 + 0.1 x: part of it lies above the
+  // water. Independent integral: the midpoint rule on a 400 x 400 grid of
+  // the square's own coordinates (its error is far below 1e-4).
+  WaterTable<3> w;
+  w.knots = {{0, 0, 1.0}, {1, 0, 1.1}, {0, 1, 1.0}};
+  const double a = M_PI / 6;
+  auto at = [&](double s, double t) { return Eigen::Vector3d(s, t * std::cos(a), t * std::sin(a)); };
+  const std::vector<Eigen::Vector3d> face{at(0, 0), at(2, 0), at(2, 2), at(0, 2)};
+  const PressureResultant<3> r = pressure_on_polygon(w, face);
+  const int n = 400;
+  double force = 0;
+  Eigen::Vector3d moment = Eigen::Vector3d::Zero();
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const Eigen::Vector3d p = at(2.0 * (i + 0.5) / n, 2.0 * (j + 0.5) / n);
+      const double u = w.pressure(p) * (2.0 / n) * (2.0 / n);
+      force += u;
+      moment += u * p;
+    }
+  EXPECT_NEAR(r.force, force, 1e-4 * force);
+  EXPECT_LT((r.centre - moment / force).norm(), 1e-3);
+  EXPECT_GT(r.force, 0.0);
+}
+
+// ---- a 2D block on an incline with a water table --------------------------
+
+constexpr double kAlpha = 30.0;  // degrees
+constexpr double kG = 9.81, kRho = 2000;
+
+// V1's plane (docs/validation.md): an 8 x 1 m slab dipping at alpha, held by
+// three fixed points, and a 1 x 1 m block on it at local x = 6..7 (uphill is
+// local +x), its base at z = 3 .. 3.5. The water table at `level` loads the
+// joint between them.
+ModelInput incline(double phi_deg, double level) {
+  const double a = deg2rad(kAlpha);
+  ModelInput in;
+  in.geometry.blocks.push_back(test::make_block(test::rotated(test::rectangle(0, -1, 8, 1), a)));
+  in.geometry.blocks.push_back(test::make_block(test::rotated(test::rectangle(6, 0, 1, 1), a)));
+  in.materials = {test::rock(kRho, 5e10)};
+  JointProperties j;
+  j.friction_deg = phi_deg;
+  in.joint_sets = {j};
+  in.control.dt = 1e-3;
+  WaterTable<2> w;
+  w.level = level;
+  in.water = w;
+  for (const double x : {0.5, 4.0, 7.5}) in.fixed_points.push_back({"base", test::rotated(Vec2(x, -0.5), a), 0, {}});
+  in.measurements.push_back({"slider", test::rotated(Vec2(6.5, 0.5), a), 1});
+  return in;
+}
+
+// The water table 0.4 m above the middle of the block's base (z = 3.25):
+// the base is under water from end to end (its top end is at z = 3.5), so
+// U = gamma_w * 1 m * 0.4 m = 3924 N/m (mean depth times length).
+constexpr double kLevel = 3.65;
+constexpr double kU = kGammaW * 1.0 * 0.4;
+
+double weight() { return kRho * kG * 1.0; }  // N/m, the 1 m^2 block
+// The friction angle at which FS = 1: tan phi = W sin a / (W cos a - U).
+double critical_phi() {
+  const double a = deg2rad(kAlpha);
+  return rad2deg(std::atan(weight() * std::sin(a) / (weight() * std::cos(a) - kU)));
+}
+
+TEST(WaterIncline, LimitEquilibriumOfTheHandNumbers) {
+  // The analytical side on its own: 36.90 degrees wet against 30 dry, and
+  // FS from the formula at phi = 40: (16991 - 3924) tan 40 / 9810 = 1.1177.
+  EXPECT_NEAR(critical_phi(), 36.896, 0.001);
+  const double a = deg2rad(kAlpha);
+  const double fs = (weight() * std::cos(a) - kU) * std::tan(deg2rad(40.0)) / (weight() * std::sin(a));
+  EXPECT_NEAR(fs, 1.1177, 1e-4);
+}
+
+TEST(WaterIncline, BlockHoldsJustAboveTheCriticalAngleWithEffectiveNormalForce) {
+  // phi_c + 0.5 degree: FS = 1.02, the block must stay (the bound is the
+  // friction-limit test's, tests/df/test_friction_limit.cpp), and its
+  // contacts carry the effective normal force W cos a - U = 13 067 N/m:
+  // the water's push took U off the springs.
+  Simulation sim(build_model(incline(critical_phi() + 0.5, kLevel)));
+  sim.run_until(1.0);
+  const auto& h = sim.histories()[0];
+  const double slip = (h.back().displacement - h.front().displacement).norm();
+  double normal = 0;
+  for (const Contact& c : sim.contacts()) normal += c.normal_force;
+  const double expected = weight() * std::cos(deg2rad(kAlpha)) - kU;
+  std::printf("water incline, phi_c + 0.5: slip %.2e m, sum N %.1f N/m (expected %.1f)\n", slip, normal, expected);
+  EXPECT_LT(slip, 1e-4);
+  EXPECT_NEAR(normal, expected, 1e-3 * expected);
+}
+
+TEST(WaterIncline, BlockSlidesJustBelowTheCriticalAngle) {
+  // phi_c - 0.5 degree: FS = 0.98, it must slide; and well below, at
+  // phi_c - 5, with the acceleration of the effective-stress balance,
+  // a = (W sin a - (W cos a - U) tan phi) / m, so s(1 s) = a / 2 (within 1 %,
+  // V1's tolerance for the dry block).
+  Simulation near(build_model(incline(critical_phi() - 0.5, kLevel)));
+  near.run_until(1.0);
+  EXPECT_GT(near.histories()[0].back().displacement.norm(), 1e-3);
+
+  const double phi = critical_phi() - 5;
+  Simulation sim(build_model(incline(phi, kLevel)));
+  sim.run_until(1.0);
+  const double s = sim.histories()[0].back().displacement.norm();
+  const double a = deg2rad(kAlpha);
+  const double acc = (weight() * std::sin(a) - (weight() * std::cos(a) - kU) * std::tan(deg2rad(phi))) / kRho;
+  std::printf("water incline, phi_c - 5: s %.5f m, expected %.5f m\n", s, acc / 2);
+  EXPECT_NEAR(s, acc / 2, 0.01 * acc / 2);
+}
+
+TEST(WaterIncline, TableBelowTheJointChangesNothing) {
+  // A water table under the whole model loads no face: the run is the dry
+  // run bit for bit (so is one without `water`).
+  ModelInput dry = incline(critical_phi() - 5, -100);
+  ModelInput none = dry;
+  none.water.reset();
+  Simulation a(build_model(dry)), b(build_model(none));
+  a.run_until(0.2);
+  b.run_until(0.2);
+  EXPECT_EQ(a.histories()[0].back().displacement, b.histories()[0].back().displacement);
+}
+
+TEST(WaterIncline, SaturationScalesThePressure) {
+  // saturation 0.5 halves U: the critical angle becomes that of U / 2,
+  // tan phi = W sin a / (W cos a - U / 2) (33.13 degrees); 0.5 degree below
+  // it the block slides, 0.5 above it holds.
+  const double a = deg2rad(kAlpha);
+  const double phi_half = rad2deg(std::atan(weight() * std::sin(a) / (weight() * std::cos(a) - kU / 2)));
+  for (const double dphi : {-0.5, 0.5}) {
+    ModelInput in = incline(phi_half + dphi, kLevel);
+    in.joint_sets[0].saturation = 0.5;
+    Simulation sim(build_model(in));
+    sim.run_until(1.0);
+    const double s = sim.histories()[0].back().displacement.norm();
+    if (dphi < 0)
+      EXPECT_GT(s, 1e-3);
+    else
+      EXPECT_LT(s, 1e-4);
+  }
+}
+
+}  // namespace
+}  // namespace dda::df
