@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "dda/df/contact.hpp"
+#include "dda/df/simulation3d.hpp"
 #include "dda/df/water.hpp"
 
 namespace dda::df {
@@ -20,5 +21,15 @@ namespace dda::df {
 std::vector<WaterLoad<2>> water_loads_2d(const WaterTable<2>& water, const std::vector<double>& saturation,
                                          const std::vector<const Polygon2*>& blocks,
                                          const std::vector<Contact>& contacts, double reach);
+
+// 3D: the faces of the vertex-face contacts (the face of block j and the
+// faces of block i at the vertex antiparallel to it within 10 degrees, all
+// of whose corners lie within `reach` of its plane), each pair once; the
+// polygon both cover (face i projected on face j's plane, clipped by face
+// j) is loaded with u times saturation[joint of the contact]. Edge-edge
+// contacts add no pair: a face lying on a face has vertex-face contacts.
+std::vector<WaterLoad<3>> water_loads_3d(const WaterTable<3>& water, const std::vector<double>& saturation,
+                                         const std::vector<Polyhedron>& blocks,
+                                         const std::vector<df3::Contact3>& contacts, double reach);
 
 }  // namespace dda::df
