@@ -129,6 +129,9 @@ void add_newmark_command(CLI::App& app, const GlobalOptions& global) {
   CLI::Option* phi = cmd->add_option("--phi", opt->in.phi_deg, "Friction angle (deg)");
   CLI::Option* two_way =
       cmd->add_flag("--two-way", opt->in.two_way, "Allow upslope sliding too (default: downslope only)");
+  CLI::Option* ru = cmd->add_option("--ru", opt->in.ru,
+                                    "Pore-pressure ratio on the plane, [0, 1) (Bishop's: u = ru x the vertical "
+                                    "overburden; water force ru W / cos(dip) normal to the plane, constant)");
   CLI::Option* dt = cmd->add_option("--dt", opt->in.dt, "Time step (s, default 1e-4)");
   CLI::Option* duration = cmd->add_option("--duration", opt->in.duration, "Duration (s; default: the record's end)");
   add_input_options(cmd, opt->input);
@@ -139,6 +142,7 @@ void add_newmark_command(CLI::App& app, const GlobalOptions& global) {
   CLI::Option* ky = cmd->add_option(
       "--ky", ra.ky, "Yield coefficient k_y (g): analyse records as SLAMMER does (sliding while a > k_y g)");
   ky->excludes(dip)->excludes(dip_dir)->excludes(phi)->excludes(two_way)->excludes(dt)->excludes(duration);
+  ky->excludes(ru);
   cmd->add_option("--records", opt->record_paths, "With --ky: record files and folders (every file in a folder)")
       ->needs(ky);
   cmd->add_option("--method", opt->methods,
