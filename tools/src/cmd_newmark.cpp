@@ -11,6 +11,7 @@
 #include "dda/analysis/newmark.hpp"
 #include "dda/common/atomic_file.hpp"
 #include "dda/common/error.hpp"
+#include "dda/common/short_number.hpp"
 #include "dda/common/output_guard.hpp"
 #include "newmark_records.hpp"
 #include "pipeline.hpp"
@@ -175,6 +176,8 @@ void add_newmark_command(CLI::App& app, const GlobalOptions& global) {
     }
     opt->has_plane = dip->count() > 0 && phi->count() > 0;
     if (!opt->has_plane) throw InputError("newmark: give --dip and --phi (a plane), or --ky (records).");
+    if (!(opt->in.ru >= 0.0 && opt->in.ru < 1.0))
+      throw InputError("--ru must lie in [0, 1) (a pore-pressure ratio), got " + short_number(opt->in.ru) + ".");
     refuse_overwriting_inputs({opt->input.record.path}, {opt->output});
     const analysis::Excitation ex = build_excitation(opt->input);
     analysis::NewmarkInput in = opt->in;
