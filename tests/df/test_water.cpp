@@ -210,5 +210,55 @@ TEST(WaterIncline, SaturationScalesThePressure) {
   }
 }
 
+TEST(WaterBond, TensileBondSeesTheEffectiveStress) {
+  // A 1 x 1 m block (W = 19 620 N/m) bonded to a fixed base by a joint of
+  // tensile strength 10 kPa over its 1 m base (T l = 10 000 N/m, 5000 on
+  // each of its two corner contacts), the joint at depth d below a water
+  // table: the water pushes the block up with U = gamma_w d (1 m), so the
+  // bond's springs carry N = W - U in all (tension when negative) and break
+  // once U - W > T l, at d = (W + T l) / gamma_w = 3.019 m. At d = 3.0 m the
+  // block stays bonded with N = (W - U) / 2 = -4905 N/m a contact; at
+  // d = 3.05 m (1 % deeper) the bond breaks and the water lifts the block.
+  // The cohesion (100 kPa) keeps the bond from failing in shear first: with
+  // none, the little shear the blocks' elastic strains put on the stiff
+  // contacts exceeds mu N once the water has taken most of N away (the
+  // same effective stress, acting on the shear strength).
+  for (const double depth : {3.0, 3.05}) {
+    ModelInput in;
+    in.geometry.blocks.push_back(test::make_block(test::rectangle(-2, -1, 5, 1)));
+    in.geometry.blocks.push_back(test::make_block(test::rectangle(0, 0, 1, 1)));
+    in.materials = {test::rock(kRho, 5e10)};
+    JointProperties j;
+    j.tensile_strength = 1e4;
+    j.cohesion = 1e5;
+    in.joint_sets = {j};
+    in.control.dt = 1e-3;
+    WaterTable<2> w;
+    w.level = depth;
+    in.water = w;
+    for (const double x : {-1.5, 0.5, 2.5}) in.fixed_points.push_back({"base", Vec2(x, -0.5), 0, {}});
+    in.measurements.push_back({"block", Vec2(0.5, 0.5), 1});
+    Simulation sim(build_model(in));
+    sim.run_until(0.2);
+    const double rise = sim.histories()[0].back().displacement.y();
+    int bonded = 0;
+    double normal = 0;
+    for (const Contact& c : sim.contacts()) {
+      bonded += c.bonded;
+      normal += c.normal_force;
+    }
+    std::printf("bonded block under %.2f m of water: rise %.3e m, %d bonds, sum N %.1f N/m\n", depth, rise, bonded,
+                normal);
+    if (depth < 3.019) {
+      EXPECT_EQ(bonded, 2);
+      EXPECT_NEAR(normal, weight() - kGammaW * depth, 1e-6 * weight());
+      EXPECT_LT(std::abs(rise), 1e-5);
+    } else {
+      EXPECT_EQ(bonded, 0);
+      EXPECT_GT(rise, 1e-3);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace dda::df
