@@ -18,6 +18,7 @@ namespace dda::df {
 // the vertex block at the vertex, antiparallel within 10 degrees, and no
 // further apart than `reach`), each pair once, their common stretch on the
 // edge block's edge loaded with u times saturation[joint of the contact].
+// Glued contacts (DC's artificial cuts) carry no water.
 std::vector<WaterLoad<2>> water_loads_2d(const WaterTable<2>& water, const std::vector<double>& saturation,
                                          const std::vector<const Polygon2*>& blocks,
                                          const std::vector<Contact>& contacts, double reach);
@@ -28,6 +29,7 @@ std::vector<WaterLoad<2>> water_loads_2d(const WaterTable<2>& water, const std::
 // polygon both cover (face i projected on face j's plane, clipped by face
 // j) is loaded with u times saturation[joint of the contact]. Edge-edge
 // contacts add no pair: a face lying on a face has vertex-face contacts.
+// Faces of the artificial set (cuts inside one rock body) carry no water.
 std::vector<WaterLoad<3>> water_loads_3d(const WaterTable<3>& water, const std::vector<double>& saturation,
                                          const std::vector<Polyhedron>& blocks,
                                          const std::vector<df3::Contact3>& contacts, double reach);

@@ -16,7 +16,9 @@ std::vector<WaterLoad<2>> water_loads_2d(const WaterTable<2>& water, const std::
   std::set<std::tuple<int, int, int, int>> seen;  // (edge block, edge, other block, its edge), lower block first
   for (const Contact& c : contacts) {
     const double sat = saturation[c.joint];
-    if (sat <= 0) continue;
+    // A glued contact is across one of DC's artificial cuts, inside one
+    // piece of rock: no joint, no water.
+    if (sat <= 0 || c.glued) continue;
     const Polygon2& pe = *blocks[c.eblock];
     const Polygon2& pv = *blocks[c.vblock];
     const int ne = static_cast<int>(pe.size()), nv = static_cast<int>(pv.size());

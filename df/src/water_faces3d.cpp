@@ -52,10 +52,12 @@ std::vector<WaterLoad<3>> water_loads_3d(const WaterTable<3>& water, const std::
     const Polyhedron& bi = blocks[static_cast<std::size_t>(c.i)];
     const Polyhedron& bj = blocks[static_cast<std::size_t>(c.j)];
     const PolyFace& fj = bj.faces[static_cast<std::size_t>(c.ids[1])];
+    if (fj.set == kArtificialSet) continue;  // a cut inside one rock body (its glued convex parts): no joint
     const std::vector<Vec3> face_j = face_points(bj, fj);
     const Vec3 n = (face_j[1] - face_j[0]).cross(face_j[2] - face_j[0]).normalized();  // outward, from the loop
     for (std::size_t k = 0; k < bi.faces.size(); ++k) {
       const PolyFace& fi = bi.faces[k];
+      if (fi.set == kArtificialSet) continue;
       if (std::find(fi.vertices.begin(), fi.vertices.end(), c.ids[0]) == fi.vertices.end()) continue;
       std::vector<Vec3> face_i = face_points(bi, fi);
       const Vec3 ni = (face_i[1] - face_i[0]).cross(face_i[2] - face_i[0]).normalized();

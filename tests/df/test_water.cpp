@@ -13,6 +13,7 @@
 #include "df_test_models.hpp"
 #include "dda/df/simulation.hpp"
 #include "dda/df/water.hpp"
+#include "water_faces.hpp"
 
 namespace dda::df {
 namespace {
@@ -258,6 +259,36 @@ TEST(WaterBond, TensileBondSeesTheEffectiveStress) {
       EXPECT_GT(rise, 1e-3);
     }
   }
+}
+
+TEST(WaterFaces, FacingEdgesAreLoadedOnceAndGluedCutsNotAtAll) {
+  // Two unit squares side by side (the right one's left edge on the left
+  // one's right edge, x = 1), under a level of 2: the shared face, depths
+  // 1 .. 2 from top to bottom, carries U = gamma_w * 1.5 (mean depth times
+  // 1 m), centred s = L (d0 + 2 d1) / (3 (d0 + d1)) = 5/9 below its top
+  // (y = 4/9), pushing the right block to +x and the left one to -x. Both of
+  // the right block's left corners touch the edge: one pair, found twice,
+  // loaded once. Glued (an artificial cut), nothing.
+  const Polygon2 left = test::rectangle(0, 0, 1, 1), right = test::rectangle(1, 0, 1, 1);
+  std::vector<Contact> contacts(2);
+  for (int k = 0; k < 2; ++k) {
+    contacts[k].vblock = 1;
+    contacts[k].vertex = k == 0 ? 0 : 3;  // (1, 0) and (1, 1)
+    contacts[k].eblock = 0;
+    contacts[k].edge = 1;  // (1, 0) -> (1, 1)
+  }
+  WaterTable<2> w;
+  w.level = 2;
+  const std::vector<const Polygon2*> blocks{&left, &right};
+  const auto loads = water_loads_2d(w, {1.0}, blocks, contacts, 0.01);
+  ASSERT_EQ(loads.size(), 2u);
+  EXPECT_EQ(loads[0].block, 1);
+  EXPECT_NEAR(loads[0].force.x(), kGammaW * 1.5, 1e-9 * kGammaW);
+  EXPECT_NEAR(loads[0].force.y(), 0, 1e-9);
+  EXPECT_NEAR(loads[1].force.x(), -kGammaW * 1.5, 1e-9 * kGammaW);
+  EXPECT_NEAR(loads[0].at.y(), 4.0 / 9.0, 1e-12);
+  for (Contact& c : contacts) c.glued = true;
+  EXPECT_TRUE(water_loads_2d(w, {1.0}, blocks, contacts, 0.01).empty());
 }
 
 }  // namespace
