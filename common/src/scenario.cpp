@@ -9,7 +9,7 @@ const std::vector<std::string>& scenario_sections() {
       "name",       "description", "seed",     "domain",   "joint_sets", "layering",
       "excavations", "lines",      "traces",   "geometry", "points",     "cutting",
       "materials",  "joints",      "loading",  "fixed",    "bolts",      "boundaries",
-      "control",    "output",
+      "control",    "output",     "water",
       // 3D (dimension: 3)
       "dimension", "fracture_sets", "persistent_sets", "planes", "fracture_files", "trace_planes"};
   return sections;

@@ -257,6 +257,17 @@ Model build_model(ModelInput in) {
             w + " has a non-positive breaking force.");
     m.bolts.push_back(b);
   }
+  if (in.water) {
+    const WaterTable<2>& w = *in.water;
+    require(std::isfinite(w.unit_weight) && w.unit_weight >= 0,
+            "The unit weight of water must be >= 0, got " + num(w.unit_weight) + " N/m^3.");
+    require(std::isfinite(w.level), "The water level is not a finite number.");
+    for (std::size_t k = 1; k < w.knots.size(); ++k)
+      require(w.knots[k].x() > w.knots[k - 1].x(), "The water surface's points must have increasing x.");
+    for (const JointProperties& j : m.joints)
+      require(j.saturation >= 0 && j.saturation <= 1, "A joint saturation is outside [0, 1].");
+    m.water = w;
+  }
   for (MeasurementPoint p : in.measurements) {
     p.block = resolve_block(m.blocks, p.block, p.position, "Measurement point '" + p.name + "'");
     m.measurements.push_back(p);

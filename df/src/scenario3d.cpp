@@ -16,6 +16,7 @@
 #include "scenario_block_points.hpp"
 #include "scenario_control.hpp"
 #include "scenario_joints.hpp"
+#include "scenario_water.hpp"
 #include "scenario_points.hpp"
 #include "scenario_record.hpp"
 
@@ -43,6 +44,7 @@ struct Parsed3 {
   bool initial_equilibrium = Control3{}.initial_equilibrium;
   df::ViscousDamping damping;
   std::optional<double> normal_penalty, shear_penalty, contact_reach;
+  std::optional<df::WaterTable<3>> water;
 };
 
 // The 2D joint keys the 3D contacts cannot honour: a contact is a point with
@@ -148,11 +150,12 @@ Parsed3 parse(const YamlNode& root) {
   read_loading3(root, p);
   p.fixed = read_fixed3(root);
   read_control3(root, p);
+  p.water = df::read_water<3>(root);
   return p;
 }
 
 bool has_any_df_section(const YamlNode& root) {
-  for (const char* k : {"materials", "joints", "loading", "fixed", "control"})
+  for (const char* k : {"materials", "joints", "loading", "fixed", "water", "control"})
     if (root.has(k)) return true;
   return false;
 }
@@ -343,6 +346,7 @@ DfScenario3 read_df3_scenario(const YamlNode& root, const PolyhedronModel& block
   m.default_joint = p.joints.default_joint;
   m.joint_sets = df::joints_by_set(p.joints, blocks.sets, blocks_path);
   m.gravity = p.gravity;
+  m.water = p.water;
   m.fixed = select_fixed_blocks(p.fixed, blocks, blocks_path);
   assign_materials3(p.materials, blocks, blocks_path, m);  // after m.fixed: fixed blocks start at rest
   add_points(p, root, blocks, blocks_path, m);

@@ -15,6 +15,7 @@
 #include "scenario_control.hpp"
 #include "scenario_joints.hpp"
 #include "scenario_points.hpp"
+#include "scenario_water.hpp"
 
 namespace dda::df {
 namespace {
@@ -128,6 +129,7 @@ struct Parsed {
   std::vector<std::string> viscous_sides;       // boundaries.viscous
   std::vector<std::string> free_field_sides;    // boundaries.free_field
   std::optional<YamlNode> viscous_node;
+  std::optional<WaterTable<2>> water;
   Control control;
   OutputSchedule output;
 };
@@ -235,6 +237,8 @@ Parsed parse(const YamlNode& root) {
     p.bolts.emplace_back(item, b);
   }
 
+  p.water = read_water<2>(root);
+
   // control
   const YamlNode c = root.child("control");
   std::vector<std::string> keys{"w0", "dynamic", "max_open_close", "penalty_factor", "shear_ratio",
@@ -267,7 +271,7 @@ Parsed parse(const YamlNode& root) {
 }
 
 bool has_any_df_section(const YamlNode& root) {
-  for (const char* k : {"materials", "joints", "loading", "fixed", "bolts", "boundaries", "control"})
+  for (const char* k : {"materials", "joints", "loading", "fixed", "bolts", "boundaries", "water", "control"})
     if (root.has(k)) return true;
   return false;
 }
@@ -411,6 +415,7 @@ DfScenario read_df_scenario(const YamlNode& root, const BlockModel& blocks, cons
   in.geometry = blocks;
   in.control = p.control;
   in.gravity = p.gravity;
+  in.water = p.water;
   out.output = p.output;
 
   // Materials: the first zone a block's centroid (or bed) falls in, else the default.

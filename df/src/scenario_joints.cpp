@@ -70,6 +70,7 @@ JointProperties read_joint(const YamlNode& n, const JointProperties& base) {
   j.friction_deg = n.number("friction_deg", base.friction_deg, Range::half_open(0, 90));
   j.cohesion = n.number("cohesion", base.cohesion, Range::non_negative());
   j.tensile_strength = n.number("tensile_strength", base.tensile_strength, Range::non_negative());
+  j.saturation = n.number("saturation", base.saturation, Range::closed(0, 1));
   if (n.has("normal_penalty")) j.normal_penalty = n.number("normal_penalty", Range::positive());
   if (n.has("shear_penalty")) j.shear_penalty = n.number("shear_penalty", Range::positive());
   // friction_law: a name (keeping the parameters of the base, if any, when
@@ -101,7 +102,7 @@ JointProperties read_joint(const YamlNode& n, const JointProperties& base) {
 
 const std::vector<std::string>& joint_keys() {
   static const std::vector<std::string> keys{"friction_deg",  "cohesion",     "tensile_strength", "normal_penalty",
-                                             "shear_penalty", "friction_law", "normal_law"};
+                                             "shear_penalty", "friction_law", "normal_law",     "saturation"};
   return keys;
 }
 

@@ -4,6 +4,7 @@
 
 #include "contact_coupling3.hpp"
 #include "simulation3d_assembly.hpp"
+#include "water_faces.hpp"
 #include "dda/common/error.hpp"
 #include "dda/df/runaway.hpp"
 
@@ -192,6 +193,20 @@ void Simulation3::assemble(double dt) {
     add_point_terms(b, dt, g, k, f);
     sys.add_k(b, b, k);
     sys.add_f(b, f);
+  }
+  if (model_.water) {
+    // The joint water's loads on facing faces (water_faces3d.cpp), from the
+    // geometry at the step's start; a fixed block takes none.
+    std::vector<double> saturation;
+    for (const df::JointProperties& j : model_.joint_sets) saturation.push_back(j.saturation);
+    saturation.push_back(model_.default_joint.saturation);
+    for (const df::WaterLoad<3>& l :
+         df::water_loads_3d(*model_.water, saturation, model_.blocks, contacts_, model_.contact_reach)) {
+      if (dof_[static_cast<std::size_t>(l.block)] < 0) continue;
+      Vector12d f = Vector12d::Zero();
+      add_point_load(block_geometry(model_.blocks[static_cast<std::size_t>(l.block)]), l.at, l.force, f);
+      sys.add_f(l.block, f);
+    }
   }
   for_each_range(block_loads_, [this](Assembly3& range, const std::vector<int>& mine) {
     for (const int k : mine) {

@@ -6,6 +6,8 @@
 
 #include "dda/df/simulation.hpp"
 #include "dda/df/viscous_boundary.hpp"
+#include "block_terms.hpp"
+#include "water_faces.hpp"
 
 namespace dda::df {
 namespace {
@@ -92,6 +94,16 @@ void Simulation::assemble_physics(double dt) {
                              edge_traction(e, dashpot, dt), dt, system_);
     }
   }
+  if (const auto& w = model_.water) {
+    // Constant over the step, from its start: the contacts (open ones too,
+    // within the search distance) say which faces face each other.
+    std::vector<const Polygon2*> polygons(blocks_.size());
+    for (std::size_t i = 0; i < blocks_.size(); ++i) polygons[i] = &blocks_[i].vertices;
+    std::vector<double> saturation;
+    for (const JointProperties& j : model_.joints) saturation.push_back(j.saturation);
+    water_loads_ = water_loads_2d(*w, saturation, polygons, contacts_, model_.search_distance);
+    for (const WaterLoad<2>& l : water_loads_) add_point_load(l.block, blocks_[l.block], l.at, l.force, system_);
+  }
   for (std::size_t k = 0; k < bolts_.size(); ++k) {
     const Bolt& b = model_.bolts[k];
     add_bolt_terms(b, bolts_[k], blocks_[b.anchor_block].geometry.centroid, blocks_[b.head_block].geometry.centroid,
@@ -153,6 +165,8 @@ void Simulation::before_accept(double dt, const Eigen::VectorXd& d) {
     const Vec2 u = t_matrix(blocks_[l.block].geometry.centroid, load_pos_[k]) * di(l.block);
     e.load_work += load_force(l, time_, time_ + dt).dot(u);
   }
+  for (const WaterLoad<2>& l : water_loads_)  // the joint water, counted with the loads
+    e.load_work += l.force.dot(t_matrix(blocks_[l.block].geometry.centroid, l.at) * di(l.block));
   if (const auto& ba = model_.body_acceleration) {  // counted with the loads
     const Vec2 b = step_body_acceleration(*ba, time_, dt, settling_);
     for (const int i : ba->blocks)

@@ -89,6 +89,27 @@ case_wedge_v5() {
   near "$(json_get b.json "d['fs']")" 1.4353 5e-5 "FS (30, 30)"
 }
 
+# Hoek & Bray's saturated wedge (V5's planes, face 65/185, upper surface
+# 12/195, H 40 m, rock 25 kN/m^3, cA 24 kPa, cB 48 kPa): the factors of
+# safety of their short solution, 1.84517 dry and 1.21395 saturated
+# (tests/analysis/test_wedge_water.cpp evaluates it); bad water input is
+# one sentence.
+case_wedge_water() {
+  local w=(wedge --plane 45/105 --plane 70/235 --phi 20,30 --face 65/185 --upper 12/195 --height 40
+           --unit-weight 25 --cohesion 24,48 --json)
+  "$DDA" "${w[@]}" > dry.json || fail "wedge dry"
+  near "$(json_get dry.json "d['fs']")" 1.84517 5e-5 "FS dry"
+  "$DDA" "${w[@]}" --water > wet.json || fail "wedge wet"
+  near "$(json_get wet.json "d['fs']")" 1.21395 5e-5 "FS saturated"
+  expect_error 1 "--water needs the wedge's geometry" -- "$DDA" wedge --plane 45/105 --plane 70/235 --phi 30 --water
+  expect_error 1 "--water-unit-weight must be > 0" -- "$DDA" "${w[@]}" --water --water-unit-weight -1
+  expect_error 1 "does not daylight in the slope face" -- "$DDA" wedge --plane 45/105 --plane 70/235 --phi 30 \
+    --face 20/185 --upper 12/195 --height 40
+  expect_error 1 "--ru must lie in \\[0, 1\\)" -- "$DDA" newmark --dip 20 --phi 30 --ru 1.5 --duration 1
+  expect_error 1 "--water: give one water force per plane" -- "$DDA" sliding3d --plane 20/090 --phi 30 \
+    --water 0.1,0.2 --duration 1
+}
+
 # docs/validation.md V3: plane 20/090, phi 30, body acceleration 0.5 g sin(10 t) along x;
 # |D| = 1.239 m after 2 pi s (within 1%).
 case_newmark_v3() {

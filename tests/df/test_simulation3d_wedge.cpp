@@ -386,5 +386,71 @@ TEST(Simulation3Wedge, ShakingTableMatchesTheAnalyticalSolutionV4) {
   EXPECT_NEAR(stiff_shear, expected, 0.15 * expected);
 }
 
+// Joint water (docs/formulation.md, "Joint water"): the V4 wedge below a
+// water table at z = 12, above the whole model, so both of its joint faces
+// are under water end to end, with the joints 30 % saturated (full
+// saturation would lift the wedge off: U/W = 0.66 per face against N/W =
+// 0.629). A flat face wholly under water carries U = s gamma_w A (h - z_c)
+// (area times the depth of its centroid: textbook hydrostatics, A and z_c
+// computed here from the face's corners; s the saturation), normal to it,
+// pushing the wedge off its plane. The effective reactions per unit
+// weight are then n_i = 0.629 - U_i / W (V4's dry reactions, the water
+// being normal to both planes), and the wedge slides along the line with
+// m s'' = W sin psi - (N_A + N_B) tan phi, the water deepening by s sin psi
+// as it goes, so that U_A + U_B grows by gamma_w (A_A + A_B) sin psi per
+// metre: s(t) = a0 / k (cosh(sqrt(k) t) - 1) from rest, a0 the initial
+// acceleration, k = g s gamma_w (A_A + A_B) sin psi tan phi / W.
+struct WetFace {
+  double area = 0, centroid_z = 0;
+};
+WetFace face_on(const Polyhedron& p, const Vec3& plane_normal) {
+  for (const PolyFace& f : p.faces) {
+    std::vector<Vec3> v;
+    for (const int k : f.vertices) v.push_back(p.vertices[static_cast<std::size_t>(k)]);
+    const Vec3 n = (v[1] - v[0]).cross(v[2] - v[0]).normalized();
+    if (n.dot(plane_normal) > -0.999) continue;  // the wedge's face on the plane looks down it
+    WetFace out;
+    double zsum = 0;
+    for (std::size_t k = 1; k + 1 < v.size(); ++k) {
+      const double a = 0.5 * (v[k] - v[0]).cross(v[k + 1] - v[0]).norm();
+      out.area += a;
+      zsum += a * (v[0].z() + v[k].z() + v[k + 1].z()) / 3;
+    }
+    out.centroid_z = zsum / out.area;
+    return out;
+  }
+  ADD_FAILURE() << "no face on the plane";
+  return {};
+}
+
+TEST(Simulation3Wedge, WaterTableReducesTheNormalForcesAndSpeedsTheSlide) {
+  constexpr double kLevel = 12, kGammaW = 9810, kPhi = 10, kT = 0.5, kSaturation = 0.3;
+  WedgeModel w = build(kPhi, kPenalty);
+  ASSERT_GE(w.wedge, 0);
+  w.model.default_joint.saturation = kSaturation;  // the faces on A and B take the default joint
+  df::WaterTable<3> water;
+  water.level = kLevel;
+  w.model.water = water;
+  const Polyhedron& wedge = w.model.blocks[static_cast<std::size_t>(w.wedge)];
+  const WetFace fa = face_on(wedge, w.nA), fb = face_on(wedge, w.nB);
+  const double ua = kSaturation * kGammaW * fa.area * (kLevel - fa.centroid_z);
+  const double ub = kSaturation * kGammaW * fb.area * (kLevel - fb.centroid_z);
+  const double psi = 27.63 * kDeg, mu = std::tan(kPhi * kDeg);
+  const double na = 0.629 - ua / w.weight, nb = 0.629 - ub / w.weight;  // effective, per unit weight
+  const double a0 = kG * (std::sin(psi) - (na + nb) * mu);
+  const double k = kG * kSaturation * kGammaW * (fa.area + fb.area) * std::sin(psi) * mu / w.weight;
+  const double expected = a0 / k * (std::cosh(std::sqrt(k) * kT) - 1);
+  std::printf("wet V4: U_A/W %.4f, U_B/W %.4f, dry slide %.5f m, wet expected %.5f m\n", ua / w.weight,
+              ub / w.weight, 0.5 * 2.3731 * kT * kT, expected);
+  const WedgeResult r = run(w, 1e-3, kT);
+  print("V4 phi=10 under water", w, r, expected);
+  // V4's tolerances (SlidesAlongTheLineOfIntersectionV4): 2 % on the slide,
+  // 5 % on the normal forces.
+  EXPECT_NEAR(r.along, expected, 0.02 * expected);
+  EXPECT_NEAR(r.mean_na / w.weight, na, 0.05 * 0.629);
+  EXPECT_NEAR(r.mean_nb / w.weight, nb, 0.05 * 0.629);
+  EXPECT_EQ(r.unconverged, 0);
+}
+
 }  // namespace
 }  // namespace dda::df3

@@ -11,6 +11,7 @@
 #include "dda/analysis/newmark.hpp"
 #include "dda/common/atomic_file.hpp"
 #include "dda/common/error.hpp"
+#include "dda/common/short_number.hpp"
 #include "dda/common/output_guard.hpp"
 #include "newmark_records.hpp"
 #include "pipeline.hpp"
@@ -129,6 +130,9 @@ void add_newmark_command(CLI::App& app, const GlobalOptions& global) {
   CLI::Option* phi = cmd->add_option("--phi", opt->in.phi_deg, "Friction angle (deg)");
   CLI::Option* two_way =
       cmd->add_flag("--two-way", opt->in.two_way, "Allow upslope sliding too (default: downslope only)");
+  CLI::Option* ru = cmd->add_option("--ru", opt->in.ru,
+                                    "Pore-pressure ratio on the plane, [0, 1) (Bishop's: u = ru x the vertical "
+                                    "overburden; water force ru W / cos(dip) normal to the plane, constant)");
   CLI::Option* dt = cmd->add_option("--dt", opt->in.dt, "Time step (s, default 1e-4)");
   CLI::Option* duration = cmd->add_option("--duration", opt->in.duration, "Duration (s; default: the record's end)");
   add_input_options(cmd, opt->input);
@@ -139,6 +143,7 @@ void add_newmark_command(CLI::App& app, const GlobalOptions& global) {
   CLI::Option* ky = cmd->add_option(
       "--ky", ra.ky, "Yield coefficient k_y (g): analyse records as SLAMMER does (sliding while a > k_y g)");
   ky->excludes(dip)->excludes(dip_dir)->excludes(phi)->excludes(two_way)->excludes(dt)->excludes(duration);
+  ky->excludes(ru);
   cmd->add_option("--records", opt->record_paths, "With --ky: record files and folders (every file in a folder)")
       ->needs(ky);
   cmd->add_option("--method", opt->methods,
@@ -171,6 +176,8 @@ void add_newmark_command(CLI::App& app, const GlobalOptions& global) {
     }
     opt->has_plane = dip->count() > 0 && phi->count() > 0;
     if (!opt->has_plane) throw InputError("newmark: give --dip and --phi (a plane), or --ky (records).");
+    if (!(opt->in.ru >= 0.0 && opt->in.ru < 1.0))
+      throw InputError("--ru must lie in [0, 1) (a pore-pressure ratio), got " + short_number(opt->in.ru) + ".");
     refuse_overwriting_inputs({opt->input.record.path}, {opt->output});
     const analysis::Excitation ex = build_excitation(opt->input);
     analysis::NewmarkInput in = opt->in;

@@ -18,6 +18,7 @@ namespace dda::cli {
 void add_sliding3d_command(CLI::App& app, const GlobalOptions& global) {
   struct Options {
     std::vector<std::string> planes;
+    std::vector<double> water;
     FrictionOptions friction;
     InputOptions input;
     double dt = 1e-4, duration = 0.0;
@@ -35,6 +36,10 @@ void add_sliding3d_command(CLI::App& app, const GlobalOptions& global) {
   cmd->add_option("--plane", opt->planes, "Plane as dip/dip-direction in degrees, e.g. 20/090; once or twice (wedge)")
       ->required();
   add_friction_options(cmd, opt->friction);
+  cmd->add_option("--water", opt->water,
+                  "Water force on each plane as a fraction of the weight, U1[,U2] (pore pressure on the sliding "
+                  "planes, constant, normal to each; e.g. dda wedge --water's forces over the weight)")
+      ->delimiter(',');
   add_input_options(cmd, opt->input);
   cmd->add_option("--dt", opt->dt, "Time step (s, default 1e-4)");
   cmd->add_option("--duration", opt->duration, "Duration (s; default: the record's end)");
@@ -48,6 +53,13 @@ void add_sliding3d_command(CLI::App& app, const GlobalOptions& global) {
     if (opt->planes.empty() || opt->planes.size() > 2) throw InputError("--plane: give one or two planes.");
     for (const auto& p : opt->planes) model.planes.push_back(analysis::parse_plane(p, "--plane"));
     model.friction = build_friction(opt->friction, model.planes.size());
+    if (!opt->water.empty()) {
+      if (opt->water.size() != model.planes.size())
+        throw InputError("--water: give one water force per plane (" + std::to_string(model.planes.size()) + ").");
+      for (const double u : opt->water)
+        if (!(u >= 0.0 && std::isfinite(u))) throw InputError("--water: each force must be >= 0 (a fraction of W).");
+      model.water = opt->water;
+    }
     model.input = build_excitation(opt->input);
     double duration = opt->duration > 0.0 ? opt->duration : model.input.duration;
     if (!(duration > 0.0)) throw InputError("--duration: give a positive duration (needed without a record).");

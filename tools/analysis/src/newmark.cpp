@@ -14,6 +14,9 @@ struct Loads {
   double normal = 0.0;   // pressing onto the plane
 };
 
+// The water force on the plane per unit mass, g ru / cos(alpha) (newmark.hpp).
+double g_water_per_mass(const NewmarkInput& in, double alpha) { return in.gravity * in.ru / std::cos(alpha); }
+
 }  // namespace
 
 NewmarkResult run_newmark(const NewmarkInput& in, const Excitation& excitation) {
@@ -22,14 +25,17 @@ NewmarkResult run_newmark(const NewmarkInput& in, const Excitation& excitation) 
   if (in.dip_deg < 0.0 || in.dip_deg >= 90.0) throw InputError("Newmark: the dip must lie in 0..90 degrees.");
   if (in.phi_deg < 0.0 || in.phi_deg >= 90.0)
     throw InputError("Newmark: the friction angle must lie in 0..90 degrees.");
+  if (!(in.ru >= 0.0 && in.ru < 1.0)) throw InputError("Newmark: the pore-pressure ratio ru must lie in [0, 1).");
   const double alpha = deg2rad(in.dip_deg);
+  const double water = g_water_per_mass(in, alpha);
   const double mu = std::tan(deg2rad(in.phi_deg));
   const double g = in.gravity;
   const Vec3 h = horizontal(in.dip_direction_deg);
   auto loads = [&](double t) {
     const Vec3 b = excitation.body(t);
     const double bh = b.dot(h), bv = b.z();
-    return Loads{bh * std::cos(alpha) + (g - bv) * std::sin(alpha), (g - bv) * std::cos(alpha) - bh * std::sin(alpha)};
+    return Loads{bh * std::cos(alpha) + (g - bv) * std::sin(alpha),
+                 (g - bv) * std::cos(alpha) - bh * std::sin(alpha) - water};
   };
   // Relative acceleration for the friction state given by velocity v.
   auto accel = [&](const Loads& l, double v) {
@@ -42,8 +48,14 @@ NewmarkResult run_newmark(const NewmarkInput& in, const Excitation& excitation) 
   };
 
   NewmarkResult r;
-  r.yield_down = g * std::tan(deg2rad(in.phi_deg - in.dip_deg));
-  r.yield_up = -g * std::tan(deg2rad(in.phi_deg + in.dip_deg));
+  if (in.ru == 0.0) {
+    r.yield_down = g * std::tan(deg2rad(in.phi_deg - in.dip_deg));
+    r.yield_up = -g * std::tan(deg2rad(in.phi_deg + in.dip_deg));
+  } else {
+    const double c = std::cos(alpha), sn = std::sin(alpha);
+    r.yield_down = g * (mu * c - sn - mu * in.ru / c) / (c + mu * sn);
+    r.yield_up = -g * (sn + mu * c - mu * in.ru / c) / (c - mu * sn);
+  }
   const auto steps = static_cast<long>(std::ceil(in.duration / in.dt - 1e-9));
   double s = 0.0, v = 0.0;
   Loads l0 = loads(0.0);

@@ -61,12 +61,22 @@ SlidingSimulator::SlidingSimulator(SlidingModel model, double dt) : model_(std::
     reference_ = model_.planes[0].dip_vector();
     state_.mode = ContactMode::face1;
   }
+  if (!model_.water.empty()) {
+    if (model_.water.size() != model_.planes.size())
+      throw InputError("Sliding analysis: give one water force per plane.");
+    for (std::size_t k = 0; k < model_.water.size(); ++k) {
+      if (!(model_.water[k] >= 0.0 && std::isfinite(model_.water[k])))
+        throw InputError("Sliding analysis: a water force must be >= 0 (a fraction of the weight).");
+      water_ += model_.gravity * model_.water[k] * (k == 0 ? n1_ : n2_);
+    }
+  }
   settle_mode();
 }
 
 SlidingSimulator::Eval SlidingSimulator::evaluate(double t, const Vec3& v, ContactMode mode) const {
   Eval ev;
-  const Vec3 r = Vec3(0.0, 0.0, -model_.gravity) + model_.input.body(t);
+  Vec3 r = Vec3(0.0, 0.0, -model_.gravity) + model_.input.body(t);
+  if (!model_.water.empty()) r += water_;  // dry: r exactly as before
   const double speed = v.norm();
   switch (mode) {
     case ContactMode::double_face: {

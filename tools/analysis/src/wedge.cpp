@@ -20,6 +20,7 @@ double cohesion_term(const WedgeSpec& s, int plane) {
 void check(const WedgeSpec& s) {
   for (double phi : {s.phi1_deg, s.phi2_deg})
     if (!(phi >= 0.0 && phi < 90.0)) throw InputError("Wedge: friction angles must lie in 0..90 degrees.");
+  if (!(s.water1 >= 0.0 && s.water2 >= 0.0)) throw InputError("Wedge: water forces must be >= 0.");
   const bool cohesive = s.cohesion1_kpa * s.area1_m2 != 0.0 || s.cohesion2_kpa * s.area2_m2 != 0.0;
   if (cohesive && !(s.weight_kn > 0.0))
     throw InputError("Wedge: cohesion needs the weight of the wedge (kN) as well as the plane areas.");
@@ -42,9 +43,10 @@ WedgeGeometry wedge_geometry(const WedgeSpec& spec) {
   return g;
 }
 
-WedgeEquilibrium wedge_equilibrium(const WedgeSpec& spec, const Vec3& r) {
+WedgeEquilibrium wedge_equilibrium(const WedgeSpec& spec, const Vec3& r_dry) {
   check(spec);
   const Vec3 n1 = spec.plane1.normal(), n2 = spec.plane2.normal();
+  const Vec3 r = r_dry + spec.water1 * n1 + spec.water2 * n2;
   const Vec3 I = n1.cross(n2);
   if (I.norm() < 1e-9) throw InputError("Wedge: the two planes are parallel (no line of intersection).");
   const double I2 = I.squaredNorm();

@@ -14,6 +14,7 @@
 #include "dda/common/block_model.hpp"
 #include "dda/df/damping.hpp"
 #include "dda/df/types.hpp"
+#include "dda/df/water.hpp"
 
 namespace dda::df {
 
@@ -43,6 +44,9 @@ struct JointProperties {
   // normal_penalty) or another law with its numbers by key.
   std::string normal_law = "penalty";
   std::map<std::string, double> normal_parameters;
+  // Fraction of the joint water's pore pressure on this set's faces, [0, 1]
+  // (read only with a water table; water.hpp).
+  double saturation = 1;
 };
 
 // A piecewise-linear table of a 2D quantity against time: (t_k, x_k, y_k),
@@ -195,6 +199,7 @@ struct ModelInput {
   std::optional<BodyAcceleration> body_acceleration;  // e.g. an earthquake in loading mode
   std::optional<ViscousBoundary> viscous_boundary;
   std::vector<Bolt> bolts;
+  std::optional<WaterTable<2>> water;       // hydrostatic joint water (docs/formulation.md)
   std::vector<MeasurementPoint> measurements;
   std::vector<Vector6d> initial_velocity;   // empty, or one per block [u, v, r, ex, ey, gxy] rates
   std::vector<Vector3d> initial_stress;     // empty, or one per block [sx, sy, txy]
@@ -220,6 +225,7 @@ struct Model {
   std::optional<BodyAcceleration> body_acceleration;  // blocks checked, sorted, unique
   std::optional<ViscousBoundary> viscous_boundary;    // edges checked
   std::vector<Bolt> bolts;                  // blocks resolved
+  std::optional<WaterTable<2>> water;       // none: dry joints (and no cost)
   std::vector<MeasurementPoint> measurements;
   std::vector<Vector6d> initial_velocity;   // one per block
   std::vector<Vector3d> initial_stress;     // one per block

@@ -297,6 +297,8 @@ class Simulation {
   int step_count_ = 0;
   std::vector<BoltState> bolts_;
   std::vector<std::vector<BoltSample>> bolt_histories_;
+  // The joint water's loads of the step being assembled (empty without water).
+  std::vector<WaterLoad<2>> water_loads_;
   std::vector<EnergyRecord> energy_log_;
   EnergyRecord energy_start_;          // stored energy at t = 0 (in the stored fields)
   bool started_ = false;               // settle() has run (or was not asked for)

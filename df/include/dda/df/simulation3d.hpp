@@ -19,6 +19,7 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -29,6 +30,7 @@
 #include "dda/df/damping.hpp"
 #include "dda/df/energy.hpp"
 #include "dda/df/friction.hpp"
+#include "dda/df/water.hpp"
 #include "dda/df/ground_motion3.hpp"
 #include "dda/df/points3d.hpp"
 #include "dda/df/linear_solver.hpp"
@@ -92,6 +94,9 @@ struct Model3 {
   double normal_penalty = 1e9;     // N/m, per contact point
   double shear_penalty = 1e9;      // N/m, per contact point
   Vec3 gravity{0, 0, -9.81};       // m/s^2
+  // Hydrostatic joint water (df/water.hpp, docs/formulation.md); none: dry
+  // joints, and no cost. Saturation per set: JointProperties::saturation.
+  std::optional<df::WaterTable<3>> water;
   GroundInput3 earthquake;         // none while earthquake.motion is null; the fixed blocks are the foundation
   std::vector<FixedPoint3> fixed_points;  // on free blocks
   std::vector<PointLoad3> loads;          // on free blocks

@@ -24,6 +24,17 @@
 // when the velocity would change sign the block stops at the zero crossing
 // (linear in the step) and sticks until D exceeds the resistance again.
 // N <= 0 (the block leaves the plane) ends the run with lift_off set.
+//
+// Pore pressure on the plane (ru > 0): Bishop's pore-pressure ratio, the
+// water pressure on the plane as a fraction of the vertical overburden,
+// u = ru gamma h. For the column of an infinite slope the water force is
+// then U = ru W / cos(alpha), normal to the plane and constant (hydrostatic,
+// no excess pore pressure from the shaking), so per unit mass
+//   N(t) = (g - b_v) cos(alpha) - b_h sin(alpha) - g ru / cos(alpha)
+// and the yield accelerations become, with mu = tan(phi) and
+// c = cos(alpha), s = sin(alpha):
+//   downslope  b_h = g (mu c - s - mu ru / c) / (c + mu s),
+//   upslope    b_h = -g (s + mu c - mu ru / c) / (c - mu s).
 #include <vector>
 
 #include "dda/analysis/excitation.hpp"
@@ -36,6 +47,7 @@ struct NewmarkInput {
   double phi_deg = 30.0;
   bool two_way = false;  // false: downslope sliding only (classical Newmark)
   double gravity = 9.81;
+  double ru = 0.0;       // pore-pressure ratio on the plane, [0, 1) (see above)
   double dt = 1e-4;
   double duration = 0.0;
 };

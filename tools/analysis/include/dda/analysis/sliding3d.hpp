@@ -43,6 +43,11 @@ struct SlidingModel {
   std::vector<FrictionLaw> friction;   // one per plane
   Excitation input;
   double gravity = 9.81;
+  // Water force on each plane per unit weight (U_i / W, >= 0; empty or
+  // zeros: dry): pore pressure on the sliding planes, constant through the
+  // shaking (hydrostatic), along each plane's upward normal, so the normal
+  // reactions become effective ones (e.g. `dda wedge --water`'s forces).
+  std::vector<double> water;
 };
 
 struct SlidingState {
@@ -93,6 +98,7 @@ class SlidingSimulator {
   SlidingState state_;
   std::vector<SlidingEvent> events_;
   Vec3 n1_, n2_, e_;  // normals and line unit vector (e_ only for wedges)
+  Vec3 water_ = Vec3::Zero();  // g sum U_i n_i per unit mass (SlidingModel::water)
   Vec3 reference_;
 };
 

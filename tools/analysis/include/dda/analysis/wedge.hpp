@@ -15,6 +15,10 @@
 //   otherwise lifting.
 // Factor of safety FS = (N1 tan phi1 + N2 tan phi2 + (c1 A1 + c2 A2)/W) / D
 // (only the planes in contact count); infinite when D = 0, zero when lifting.
+// Water on the planes (forces U1, U2 per unit weight, along the upward
+// normals: they push the wedge off its planes) adds U1 n1 + U2 n2 to r for
+// the mode and the normal reactions, which become the effective ones; being
+// normal to both planes it leaves the driving along the line unchanged.
 // Yield acceleration: the smallest k >= 0 with FS <= 1 (0 if FS < 1 already).
 #include <optional>
 #include <string>
@@ -30,6 +34,9 @@ struct WedgeSpec {
   double cohesion1_kpa = 0.0, cohesion2_kpa = 0.0;
   double area1_m2 = 0.0, area2_m2 = 0.0;
   double weight_kn = 0.0;  // needed only with cohesion
+  // Water forces on plane 1 and 2 per unit weight (e.g. Hoek & Bray's
+  // saturated wedge, wedge_body.hpp); 0: dry.
+  double water1 = 0.0, water2 = 0.0;
 };
 
 struct WedgeEquilibrium {
