@@ -200,8 +200,8 @@ void Simulation3::assemble(double dt) {
     std::vector<double> saturation;
     for (const df::JointProperties& j : model_.joint_sets) saturation.push_back(j.saturation);
     saturation.push_back(model_.default_joint.saturation);
-    for (const df::WaterLoad<3>& l :
-         df::water_loads_3d(*model_.water, saturation, model_.blocks, contacts_, model_.contact_reach)) {
+    water_loads_ = df::water_loads_3d(*model_.water, saturation, model_.blocks, contacts_, model_.contact_reach);
+    for (const df::WaterLoad<3>& l : water_loads_) {
       if (dof_[static_cast<std::size_t>(l.block)] < 0) continue;
       Vector12d f = Vector12d::Zero();
       add_point_load(block_geometry(model_.blocks[static_cast<std::size_t>(l.block)]), l.at, l.force, f);

@@ -6,7 +6,8 @@
 //          closed contact (a sliding one keeps its shear spring stretched by
 //          the friction force); fixed p/2 |gap|^2 of the fixed-point springs.
 // input    gravity rho V g . u_c; loads: the rest of the body acceleration
-//          (an earthquake in loading mode), point loads as assembled, moving
+//          (an earthquake in loading mode), point loads and the joint water's
+//          loads as assembled, moving
 //          fixed points (the change of their spring's energy plus the work
 //          it does on the block) and the ground of an earthquake in
 //          displacement mode, which moves the fixed blocks: the work it does
@@ -108,6 +109,10 @@ void Simulation3::add_step_work(const std::vector<Vector12d>& d, double dt) {
     const auto b = static_cast<std::size_t>(l.block);
     const Vec3 u = displacement_matrix(load_at_[k], model_.blocks[b].centroid) * d[b];
     e.load_work += l.force.average(time_, time_ + span).dot(u);
+  }
+  for (const df::WaterLoad<3>& l : water_loads_) {  // the joint water, counted with the loads
+    const auto b = static_cast<std::size_t>(l.block);
+    if (dof_[b] >= 0) e.load_work += l.force.dot(displacement_matrix(l.at, model_.blocks[b].centroid) * d[b]);
   }
   for (std::size_t k = 0; k < model_.fixed_points.size(); ++k) {
     // A moving fixed point does work on its spring: the change of the

@@ -352,6 +352,7 @@ class Simulation3 {
   std::vector<StepInfo3> log_;
   std::vector<df::EnergyRecord> energy_log_;
   df::EnergyRecord energy_start_;  // the stored energy the ledger counts changes from
+  std::vector<df::WaterLoad<3>> water_loads_;  // the joint water's loads of the step (assemble), for the ledger
   double dt_ = 0;   // current step of advance()
   double w0_ = 1;   // m, the reference length of the displacement limit
   std::vector<std::unique_ptr<df::FrictionLaw>> friction_;
