@@ -116,6 +116,9 @@ TEST(Bonds3, CohesionHoldsSlabUpToTheHandLimit) {
   EXPECT_NEAR(slides.down_dip, v1, 0.01 * v1);
   EXPECT_EQ(slides.bonded, 0);  // broken, and stays broken: it slides the whole way
   EXPECT_EQ(slides.sliding, 4);
+  // The model's own limit, between 1.010 c* and 1.012 c* (docs/solver3d.md).
+  EXPECT_EQ(slab_on_plane(30, 10, h, 1.012 * c_star, 0.1).bonded, 4);
+  EXPECT_EQ(slab_on_plane(30, 10, h, 1.010 * c_star, 0.1).bonded, 0);
 }
 
 // ---- A cube hanging from the underside of a fixed block.
