@@ -6,14 +6,7 @@
 
 namespace dda::df {
 
-BoltState initial_bolt_state(const Bolt& bolt) {
-  BoltState s;
-  s.anchor = bolt.anchor;
-  s.head = bolt.head;
-  s.rest_length = (bolt.head - bolt.anchor).norm();
-  s.force = bolt.pretension;
-  return s;
-}
+BoltState initial_bolt_state(const Bolt& bolt) { return initial_bolt_state(bolt, bolt.anchor, bolt.head); }
 
 void add_bolt_terms(const Bolt& bolt, const BoltState& s, const Vec2& ca, const Vec2& ch, BlockSystem& sys) {
   if (s.broken) return;
@@ -30,22 +23,11 @@ void add_bolt_terms(const Bolt& bolt, const BoltState& s, const Vec2& ca, const 
   sys.rhs(h) -= s.force * eh;
 }
 
-bool advance_bolt(const Bolt& bolt, BoltState& s, const Vec2& ca, const Vector6d& da, const Vec2& ch,
-                  const Vector6d& dh) {
+double advance_bolt(const Bolt& bolt, BoltState& s, const Vec2& ca, const Vector6d& da, const Vec2& ch,
+                    const Vector6d& dh) {
   s.anchor = move_point(ca, da, s.anchor);
   s.head = move_point(ch, dh, s.head);
-  if (s.broken) return false;
-  s.force = bolt.pretension + bolt.stiffness * ((s.head - s.anchor).norm() - s.rest_length);
-  if (bolt.breaking_force && s.force > *bolt.breaking_force) {
-    s.broken = true;
-    s.force = 0;
-    return true;
-  }
-  return false;
-}
-
-double bolt_energy(const Bolt& bolt, const BoltState& s) {
-  return s.broken ? 0.0 : s.force * s.force / (2 * bolt.stiffness);
+  return update_bolt_force(bolt, s);
 }
 
 }  // namespace dda::df

@@ -3,6 +3,8 @@
 // step count. Everything is float64 or int32, so it reads back bit for bit.
 #include "checkpoint_h5.hpp"
 
+#include "bolts_h5.hpp"
+
 #include <cstdint>
 #include <string>
 
@@ -119,25 +121,7 @@ void write_checkpoint(h5::Writer& w, const SimulationState& s) {
   w.f64(pg.get(), "measurement_position", flat(s.measurement_pos), {s.measurement_pos.size(), 2}, "m",
         "current measurement point positions");
 
-  h5::Id bolts(H5Gcreate2(g.get(), "bolts", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
-  {
-    std::vector<Vec2> anchor, head;
-    std::vector<double> rest, force;
-    std::vector<std::int32_t> broken;
-    for (const BoltState& b : s.bolts) {
-      anchor.push_back(b.anchor);
-      head.push_back(b.head);
-      rest.push_back(b.rest_length);
-      force.push_back(b.force);
-      broken.push_back(b.broken ? 1 : 0);
-    }
-    const std::size_t nbolt = s.bolts.size();
-    w.f64(bolts.get(), "anchor", flat(anchor), {nbolt, 2}, "m", "current anchor end of each bolt");
-    w.f64(bolts.get(), "head", flat(head), {nbolt, 2}, "m", "current head end of each bolt");
-    w.f64(bolts.get(), "rest_length", rest, {nbolt}, "m", "initial length L0");
-    w.f64(bolts.get(), "force", force, {nbolt}, "N", "axial force, tension positive");
-    w.i32(bolts.get(), "broken", broken, "", "1 once broken");
-  }
+  h5io::write_bolt_states(w, g.get(), s.bolts);
 
   h5io::write_warm_start(w, g.get(), s.solver_warm_start);
 }
@@ -246,16 +230,7 @@ void read_checkpoint(const h5::Reader& r, const std::vector<std::size_t>& vertex
   s.load_pos = points(r, p + "load_position", rows_of(r, p + "load_position"));
   s.measurement_pos = points(r, p + "measurement_position", rows_of(r, p + "measurement_position"));
 
-  const std::string b = "/checkpoint/bolts/";
-  const std::size_t nbolts = rows_of(r, b + "anchor");
-  const std::vector<Vec2> anchor = points(r, b + "anchor", nbolts), head = points(r, b + "head", nbolts);
-  const h5::Array<double> rest = r.f64(b + "rest_length"), force = r.f64(b + "force");
-  const h5::Array<std::int64_t> broken = r.i64(b + "broken");
-  if (rest.data.size() != nbolts || force.data.size() != nbolts || broken.data.size() != nbolts)
-    r.fail("the datasets of /checkpoint/bolts differ in length");
-  s.bolts.assign(nbolts, BoltState{});
-  for (std::size_t k = 0; k < nbolts; ++k)
-    s.bolts[k] = {anchor[k], head[k], rest.data[k], force.data[k], broken.data[k] != 0};
+  s.bolts = h5io::read_bolt_states<2>(r, "/checkpoint/bolts/");
 
   s.solver_warm_start = h5io::read_warm_start(r, "/checkpoint");
 }

@@ -4,6 +4,7 @@
 #include <cstdint>
 
 #include "checkpoint_h5.hpp"
+#include "bolts_h5.hpp"
 #include "results_h5_util.hpp"
 #include "dda/common/atomic_file.hpp"
 #include "dda/common/error.hpp"
@@ -143,29 +144,9 @@ void write_steps(h5::Writer& w, const std::vector<StepRecord>& log) {
 }
 
 void write_bolts(h5::Writer& w, const Simulation& sim) {
-  h5::Id g = w.group("bolts");
-  w.attr_text(g.get(), "description", "rock bolt series: sample 0 is the start of the run, then one per step");
-  const auto& bolts = sim.model().bolts;
-  const auto& hs = sim.bolt_histories();
   std::vector<std::string> names;
-  for (const Bolt& b : bolts) names.push_back(b.name);
-  w.strings(g.get(), "name", names, "", "bolt names, in the order of the columns");
-  const std::size_t nb = hs.size();
-  const std::size_t ns = nb ? hs[0].size() : 0;
-  std::vector<double> time, force, length;
-  std::vector<std::int32_t> broken;
-  for (std::size_t s = 0; s < ns; ++s) {
-    time.push_back(hs[0][s].time);
-    for (std::size_t b = 0; b < nb; ++b) {
-      force.push_back(hs[b][s].force);
-      length.push_back(hs[b][s].length);
-      broken.push_back(hs[b][s].broken ? 1 : 0);
-    }
-  }
-  w.f64(g.get(), "time", time, {ns}, "s", "time of each sample");
-  w.f64(g.get(), "force", force, {ns, nb}, "N", "axial force, tension positive (per unit thickness)");
-  w.f64(g.get(), "length", length, {ns, nb}, "m", "current length");
-  w.i32(g.get(), "broken", broken, "", "1 once the bolt has broken; row-major (samples, bolts)");
+  for (const Bolt& b : sim.model().bolts) names.push_back(b.name);
+  h5io::write_bolt_series(w, names, sim.bolt_histories(), "axial force, tension positive (per unit thickness)");
 }
 
 void write_frames(h5::Writer& w, const std::vector<Frame>& frames, std::size_t nv, std::size_t nb) {
@@ -302,17 +283,7 @@ void read_series(const h5::Reader& r, Results& out) {
 }
 
 void read_bolts(const h5::Reader& r, Results& out) {
-  out.bolt_names = r.strings("/bolts/name");
-  const std::size_t nb = out.bolt_names.size();
-  const std::size_t ns = length(r, "/bolts/time");
-  const auto time = f64(r, "/bolts/time", {ns});
-  const auto force = f64(r, "/bolts/force", {ns, nb});
-  const auto len = f64(r, "/bolts/length", {ns, nb});
-  const auto broken = i64(r, "/bolts/broken", ns * nb);
-  out.bolt_histories.assign(nb, std::vector<BoltSample>(ns));
-  for (std::size_t s = 0; s < ns; ++s)
-    for (std::size_t b = 0; b < nb; ++b)
-      out.bolt_histories[b][s] = {time[s], force[s * nb + b], len[s * nb + b], broken[s * nb + b] != 0};
+  h5io::read_bolt_series(r, out.bolt_names, out.bolt_histories);
 }
 
 void read_frames(const h5::Reader& r, Results& out) {

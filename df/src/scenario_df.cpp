@@ -12,6 +12,7 @@
 #include "dda/df/time_step.hpp"
 #include "scenario_block_points.hpp"
 #include "scenario_earthquake.hpp"
+#include "scenario_bolts.hpp"
 #include "scenario_control.hpp"
 #include "scenario_joints.hpp"
 #include "scenario_points.hpp"
@@ -222,19 +223,15 @@ Parsed parse(const YamlNode& root) {
   }
 
   // bolts
-  std::set<std::string> bolt_names;
-  for (const YamlNode& item : root.list_or_empty("bolts")) {
-    item.allow({"name", "from", "to", "stiffness", "pretension", "breaking_force"});
+  for (const BoltEntry<Vec2>& e : read_bolt_entries<Vec2>(root, vector2)) {
     Bolt b;
-    b.name = item.text("name", "bolt" + std::to_string(p.bolts.size() + 1));
-    if (!bolt_names.insert(b.name).second) item.fail_key("name", "repeats the bolt name '" + b.name + "'");
-    b.anchor = vector2(item, "from");
-    b.head = vector2(item, "to");
-    if (b.anchor == b.head) item.fail_key("to", "must differ from `from` (the bolt has zero length)");
-    b.stiffness = item.number("stiffness", Range::positive());
-    b.pretension = item.number("pretension", 0, Range::non_negative());
-    if (item.has("breaking_force")) b.breaking_force = item.number("breaking_force", Range::positive());
-    p.bolts.emplace_back(item, b);
+    b.name = e.name;
+    b.anchor = e.from;
+    b.head = e.to;
+    b.stiffness = e.stiffness;
+    b.pretension = e.pretension;
+    b.breaking_force = e.breaking_force;
+    p.bolts.emplace_back(e.node, b);
   }
 
   p.water = read_water<2>(root);

@@ -64,8 +64,7 @@ void Simulation::init_physics() {
     for (const Bolt& b : model_.bolts) bolts_.push_back(initial_bolt_state(b));
   bolt_histories_.assign(model_.bolts.size(), {});
   for (std::size_t k = 0; k < bolts_.size(); ++k) {
-    const BoltState& s = bolts_[k];
-    bolt_histories_[k].push_back({time_, s.force, (s.head - s.anchor).norm(), s.broken});
+    bolt_histories_[k].push_back(bolt_sample(time_, bolts_[k]));
   }
   // Stored energy of the starting state; the work sums start at zero.
   EnergyRecord e;
@@ -200,18 +199,15 @@ void Simulation::before_accept(double dt, const Eigen::VectorXd& d) {
     const Bolt& b = model_.bolts[k];
     BoltState& s = bolts_[k];
     const Vec2 ca = blocks_[b.anchor_block].geometry.centroid, ch = blocks_[b.head_block].geometry.centroid;
-    if (advance_bolt(b, s, ca, di(b.anchor_block), ch, di(b.head_block))) {
-      const double t = b.pretension + b.stiffness * ((s.head - s.anchor).norm() - s.rest_length);
-      e.breakage += t * t / (2 * b.stiffness);
-    }
+    if (const double released = advance_bolt(b, s, ca, di(b.anchor_block), ch, di(b.head_block)); released > 0)
+      e.breakage += released;
   }
   energy_log_.push_back(e);
 }
 
 void Simulation::after_accept(double /*dt*/) {
   for (std::size_t k = 0; k < bolts_.size(); ++k) {
-    const BoltState& s = bolts_[k];
-    bolt_histories_[k].push_back({time_, s.force, (s.head - s.anchor).norm(), s.broken});
+    bolt_histories_[k].push_back(bolt_sample(time_, bolts_[k]));
   }
   // Stored energy at the end of the step.
   EnergyRecord& e = energy_log_.back();

@@ -13,6 +13,7 @@
 // (it still carried its force during the step in which it broke).
 #include <vector>
 
+#include "dda/df/bolt_law.hpp"
 #include "dda/df/model.hpp"
 #include "dda/df/types.hpp"
 
@@ -20,20 +21,9 @@ namespace dda::df {
 
 class BlockSystem;
 
-struct BoltState {
-  Vec2 anchor{0, 0}, head{0, 0};   // current end positions
-  double rest_length = 0;          // L0, m (initial length)
-  double force = 0;                // N, tension positive; 0 once broken
-  bool broken = false;
-};
-
-// One sample of a bolt's history (sample 0 is the initial state).
-struct BoltSample {
-  double time = 0;
-  double force = 0;                // N, tension positive
-  double length = 0;               // m
-  bool broken = false;
-};
+// The law itself (force, breakage, energy, state) is bolt_law.hpp, the
+// same in 3D; what is 2D here is how the ends ride with their blocks.
+using BoltState = BoltStateOf<2>;
 
 BoltState initial_bolt_state(const Bolt& bolt);
 
@@ -43,11 +33,9 @@ void add_bolt_terms(const Bolt& bolt, const BoltState& s, const Vec2& ca, const 
 
 // Moves the ends with the step increments of their blocks (exact rotation),
 // recomputes the force and breaks the bolt if it is over its strength.
-// Returns true if it broke in this step.
-bool advance_bolt(const Bolt& bolt, BoltState& s, const Vec2& ca, const Vector6d& da, const Vec2& ch,
-                  const Vector6d& dh);
-
-// Elastic energy in the bar, T^2 / (2 k) (0 once broken), J per unit thickness.
-double bolt_energy(const Bolt& bolt, const BoltState& s);
+// Returns the energy a break in this step released (T^2 / 2k, J per unit
+// thickness), else 0.
+double advance_bolt(const Bolt& bolt, BoltState& s, const Vec2& ca, const Vector6d& da, const Vec2& ch,
+                    const Vector6d& dh);
 
 }  // namespace dda::df

@@ -72,7 +72,7 @@ struct ResultsParts {
   bool series = true;      // the measurement points and their histories
   bool log = true;         // the per-step log
   bool energy = true;      // the energy record (2D; 3D files have none)
-  bool bolts = true;       // the bolt histories (2D)
+  bool bolts = true;       // the bolt histories
   bool frames = true;      // the blocks the run started from and the block frames
   bool checkpoint = true;  // the state a run resumes from (needs frames)
 
