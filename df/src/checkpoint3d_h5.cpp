@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <string>
 
+#include "bolts_h5.hpp"
 #include "results_h5_util.hpp"
 
 namespace dda::df3 {
@@ -140,6 +141,7 @@ void write_checkpoint3(h5::Writer& w, const Simulation3State& s) {
   w.f64(pg.get(), "measurement_position", flat(s.measure_at), {s.measure_at.size(), 3}, "m",
         "where each measurement point is now");
   df::h5io::write_warm_start(w, g.get(), s.solver_warm_start);
+  if (!s.bolts.empty()) df::h5io::write_bolt_states(w, g.get(), s.bolts);  // a run without bolts: as before
 }
 
 Simulation3State read_checkpoint3(const h5::Reader& r, const std::vector<std::size_t>& vertex_counts) {
@@ -234,6 +236,7 @@ Simulation3State read_checkpoint3(const h5::Reader& r, const std::vector<std::si
   s.load_at = points(r, "/checkpoint/points/load_position");
   s.measure_at = points(r, "/checkpoint/points/measurement_position");
   s.solver_warm_start = df::h5io::read_warm_start(r, "/checkpoint");
+  if (r.exists("/checkpoint/bolts")) s.bolts = df::h5io::read_bolt_states<3>(r, "/checkpoint/bolts/");
   return s;
 }
 

@@ -4,6 +4,7 @@
 // file's (model_io3_h5.hpp), the checkpoint is checkpoint3d_h5.cpp.
 #include <cstdint>
 
+#include "bolts_h5.hpp"
 #include "checkpoint3d_h5.hpp"
 #include "dda/common/atomic_file.hpp"
 #include "dda/common/error.hpp"
@@ -151,6 +152,11 @@ void write_results3_h5(const std::string& path, const Results3& results, const S
   write_series(w, sim);
   write_steps(w, sim.log());
   df::h5io::write_energy(w, sim.energy_log(), "J");
+  if (!sim.model().bolts.empty()) {  // a run without bolts writes the file it wrote before them
+    std::vector<std::string> names;
+    for (const Bolt3& b : sim.model().bolts) names.push_back(b.name);
+    df::h5io::write_bolt_series(w, names, sim.bolt_histories(), "axial force, tension positive");
+  }
   std::size_t nv = 0;
   for (const Polyhedron& b : sim.blocks()) nv += b.vertices.size();
   write_frames(w, results.frames, nv, sim.blocks().size());
@@ -170,6 +176,7 @@ Results3 read_results3_h5(const std::string& path, const df::ResultsParts& parts
   if (parts.log) read_log(r, out);
   // Files written before the 3D energy ledger have none.
   if (parts.energy && r.exists("/energy/time")) out.energy = df::h5io::read_energy(r);
+  if (parts.bolts && r.exists("/bolts/name")) df::h5io::read_bolt_series(r, out.bolt_names, out.bolt_histories);
   const std::size_t nb = length(r, "/fixed");
   for (const std::int64_t f : read_i64(r, "/fixed", nb)) out.fixed.push_back(f != 0);
   if (!parts.frames) return out;
@@ -183,6 +190,7 @@ Results3 read_results3_h5(const std::string& path, const df::ResultsParts& parts
   s.log = out.log;
   s.histories = out.histories;
   s.energy_log = out.energy;
+  s.bolt_histories = out.bolt_histories;
   out.checkpoint = std::move(s);
   return out;
 }

@@ -14,6 +14,7 @@
 #include "dda/df/time_step.hpp"
 #include "scenario3d_detail.hpp"
 #include "scenario_block_points.hpp"
+#include "scenario_bolts.hpp"
 #include "scenario_control.hpp"
 #include "scenario_joints.hpp"
 #include "scenario_water.hpp"
@@ -147,11 +148,12 @@ Parsed3 parse(const YamlNode& root) {
   p.fixed = read_fixed3(root);
   read_control3(root, p);
   p.water = df::read_water<3>(root);
+  df::read_bolt_entries<Vec3>(root, read_vec3);  // checked here, placed in blocks by add_bolts3
   return p;
 }
 
 bool has_any_df_section(const YamlNode& root) {
-  for (const char* k : {"materials", "joints", "loading", "fixed", "water", "control"})
+  for (const char* k : {"materials", "joints", "loading", "fixed", "water", "bolts", "control"})
     if (root.has(k)) return true;
   return false;
 }
@@ -346,6 +348,7 @@ DfScenario3 read_df3_scenario(const YamlNode& root, const PolyhedronModel& block
   m.fixed = select_fixed_blocks(p.fixed, blocks, blocks_path);
   assign_materials3(p.materials, blocks, blocks_path, m);  // after m.fixed: fixed blocks start at rest
   add_points(p, root, blocks, blocks_path, m);
+  add_bolts3(root, m.blocks, 1e-9 * reference_length(m.blocks), m);
   if (p.earthquake_node) {
     const bool any_fixed = std::find(m.fixed.begin(), m.fixed.end(), true) != m.fixed.end();
     if (!any_fixed && p.earthquake.mode->name() == "displacement")

@@ -14,6 +14,12 @@ namespace dda::df3 {
 
 struct Model3;
 
+// The `bolts` section (scenario3d_bolts.cpp) into m.bolts, needs m.fixed;
+// an end outside every block, two ends in one block or in two fixed blocks
+// is an error naming the key. `tolerance` (m): how far outside a block an
+// end may lie.
+void add_bolts3(const YamlNode& root, const std::vector<Polyhedron>& blocks, double tolerance, Model3& m);
+
 // [x, y, z], finite.
 Vec3 read_vec3(const YamlNode& n, const std::string& key);
 // [[t, x, y, z], ...], at least one row, t strictly increasing.

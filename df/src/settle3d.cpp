@@ -17,7 +17,7 @@
 // point are held where they are (they have no equilibrium; they start to
 // move at t = 0). Time stays 0, the velocities are the initial ones,
 // contacts keep their states and their springs loaded, blocks their
-// stresses; the log and the histories start from the settled state.
+// stresses, bolts their forces; the log and the histories start from the settled state.
 #include <limits>
 #include <optional>
 #include <vector>
@@ -46,6 +46,10 @@ df::Relaxation Simulation3::relax(bool contacts_stick) {
       if (c.state != ContactState3::Open)
         supported[static_cast<std::size_t>(c.i)] = supported[static_cast<std::size_t>(c.j)] = true;
     for (const FixedPoint3& f : model_.fixed_points) supported[static_cast<std::size_t>(f.block)] = true;
+    for (std::size_t k = 0; k < bolts_.size(); ++k)  // an intact bolt holds both its blocks
+      if (!bolts_[k].broken)
+        supported[static_cast<std::size_t>(model_.bolts[k].anchor_block)] =
+            supported[static_cast<std::size_t>(model_.bolts[k].head_block)] = true;
     for (std::size_t b = 0; b < nb; ++b)
       if (!supported[b]) d[b].setZero();
     try {
@@ -88,6 +92,7 @@ void Simulation3::settle() {
   log_.clear();
   for (auto& h : histories_) h.clear();
   sample_measurements();
+  restart_bolt_histories();
   start_energy();  // the ledger counts from the state the run starts from
 }
 

@@ -98,6 +98,7 @@ Simulation3::Simulation3(Model3 model)
     throw std::invalid_argument("Model3: an earthquake needs its mode (loading or displacement)");
   make_friction_laws();
   index_points();
+  start_bolts();
   start_energy();
   // w0: half the largest side of the model's bounding box (the 2D solver
   // takes half the height); it scales the displacement limit of a step.
@@ -167,6 +168,7 @@ void Simulation3::index_ranges() {
 
 void Simulation3::assemble(double dt) {
   std::vector<std::pair<int, int>> pairs = contact_pairs(contacts_, dof_);
+  add_bolt_pairs(pairs);
   if (pairs != k_pairs_ || k_lower_.rows() != n_dofs_) {
     k_lower_ = block_lower_pattern(dof_, n_dofs_, pairs);
     k_pairs_ = std::move(pairs);
@@ -206,6 +208,7 @@ void Simulation3::assemble(double dt) {
       sys.add_f(l.block, f);
     }
   }
+  add_bolt_terms(sys);
   for_each_range(block_loads_, [this](Assembly3& range, const std::vector<int>& mine) {
     for (const int k : mine) {
       const Contact3& c = contacts_[static_cast<std::size_t>(k)];
@@ -246,7 +249,7 @@ std::vector<Vector12d> Simulation3::solve(double dt, const std::vector<std::pair
   {
     df::ScopedTimer timer(timings_.solve);
     coupling_->set_states(contacts_);
-    x = solver_->solve_step(k_lower_, *coupling_, x, dt);  // InternalError if K is not positive definite
+    x = solve_system(x, dt);  // InternalError if K is not positive definite
     ++timings_.solves;
   }
   for (size_t b = 0; b < d.size(); ++b)
@@ -504,6 +507,7 @@ void Simulation3::finish_step(const std::vector<Vector12d>& d, double dt) {
   carry(measure_at_, [&](size_t p) { return model_.measurements[p].block; });
   time_ += dt;
   sample_measurements();
+  advance_bolts(d, old_centroid);
 }
 
 }  // namespace dda::df3

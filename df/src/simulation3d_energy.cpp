@@ -4,7 +4,8 @@
 // stored   kinetic 1/2 v^T M v of the free blocks (the twelve rates); elastic
 //          V/2 sigma^T D^-1 sigma; contact N^2/2pn + |S|^2/2ps of every
 //          closed contact (a sliding one keeps its shear spring stretched by
-//          the friction force); fixed p/2 |gap|^2 of the fixed-point springs.
+//          the friction force); fixed p/2 |gap|^2 of the fixed-point springs;
+//          bolts T^2/2k of every intact bolt.
 // input    gravity rho V g . u_c; loads: the rest of the body acceleration
 //          (an earthquake in loading mode), point loads and the joint water's
 //          loads as assembled, moving
@@ -17,7 +18,9 @@
 // losses   friction |S . slip| of every sliding contact; damping, the work
 //          of the viscous stress beta/dt V de^T D de (control.damping);
 //          breakage, the energy a joint's bond held in its springs when it
-//          broke (simulation3d_bonds.cpp).
+//          broke (simulation3d_bonds.cpp), and T^2/2k of a bolt when it
+//          breaks (simulation3d_bolts.cpp, which also books the ground's
+//          work on a bolt to a moving fixed block).
 //
 // residual = input - (stored - stored at the start) - friction - damping - breakage:
 // what the implicit step and the penalty springs dissipate, >= 0 but for
@@ -80,6 +83,7 @@ void Simulation3::store_energy(df::EnergyRecord& e) const {
   // In contact order, a zero term leaving the sum as it was: the same on
   // any number of threads.
   for (const Contact3& c : contacts_) e.contact += contact_spring_energy(c, model_.normal_penalty, model_.shear_penalty);
+  e.bolts = stored_bolt_energy();
   for (std::size_t k = 0; k < model_.fixed_points.size(); ++k) {
     const FixedPoint3& f = model_.fixed_points[k];
     Vec3 target = f.position;
@@ -139,6 +143,7 @@ void Simulation3::add_step_work(const std::vector<Vector12d>& d, double dt) {
     if (j_moved)
       e.load_work -= c.normal_force * c.geo.gn.dot(d[c.j]) + c.shear_force.dot(c.geo.gs * d[c.j]);
   }
+  if (!bolts_.empty()) e.load_work += bolt_ground_work(d);
   energy_log_.push_back(e);
 }
 

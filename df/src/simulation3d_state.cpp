@@ -20,6 +20,8 @@ Simulation3State Simulation3::state() const {
   s.energy_log = energy_log_;
   s.solver_warm_start = solver_->warm_start();
   s.started = started_;
+  s.bolts = bolts_;
+  s.bolt_histories = bolt_histories_;
   s.bonds_placed = bonds_placed_;
   return s;
 }
@@ -28,12 +30,13 @@ void Simulation3::restore(const Simulation3State& s) {
   const size_t n = model_.blocks.size();
   bool fits = s.vertices.size() == n && s.velocity.size() == n && s.stress.size() == n &&
               s.fixed_at.size() == fixed_at_.size() && s.load_at.size() == load_at_.size() &&
-              s.measure_at.size() == measure_at_.size() && s.histories.size() == histories_.size();
+              s.measure_at.size() == measure_at_.size() && s.histories.size() == histories_.size() &&
+              s.bolts.size() == bolts_.size() && s.bolt_histories.size() == bolts_.size();
   for (size_t b = 0; fits && b < n; ++b) fits = s.vertices[b].size() == model_.blocks[b].vertices.size();
   for (const Contact3& c : s.contacts)
     fits = fits && c.i >= 0 && c.j >= 0 && static_cast<size_t>(c.i) < n && static_cast<size_t>(c.j) < n &&
            c.joint >= 0 && static_cast<size_t>(c.joint) < friction_.size();
-  if (!fits) throw InputError("The checkpoint does not fit the model (block, vertex, contact or point counts differ).");
+  if (!fits) throw InputError("The checkpoint does not fit the model (block, vertex, contact, point or bolt counts differ).");
   time_ = s.time;
   dt_ = s.dt;
   for (size_t b = 0; b < n; ++b) {
@@ -50,6 +53,8 @@ void Simulation3::restore(const Simulation3State& s) {
   histories_ = s.histories;
   solver_->set_warm_start(s.solver_warm_start);
   started_ = s.started;
+  bolts_ = s.bolts;
+  bolt_histories_ = s.bolt_histories;
   bonds_placed_ = s.bonds_placed;
   // A checkpoint written before the 3D ledger has none: it counts from here.
   if (s.energy_log.empty()) {

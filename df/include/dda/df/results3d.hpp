@@ -43,15 +43,17 @@ struct Results3 {
   std::vector<StepInfo3> log;
   std::vector<std::vector<MeasurementSample3>> histories;  // per point; sample 0 is the initial state
   std::vector<df::EnergyRecord> energy;  // record 0 is the initial state, then one per step; empty in older files
+  std::vector<std::string> bolt_names;   // rock bolts, model order; none in a run without bolts
+  std::vector<std::vector<df::BoltSample>> bolt_histories;  // per bolt; sample 0 is the initial state
   std::optional<Simulation3State> checkpoint;
 };
 
 // Writes everything (atomically) with the log, histories and checkpoint of `sim`.
 void write_results3_h5(const std::string& path, const Results3& results, const Simulation3& sim, bool complete);
 
-// Reads a 3D results file, the parts asked for (df::ResultsParts; a 3D file
-// has no bolts, and files written before the 3D energy ledger no energy
-// record); InputError naming the file for anything wrong in what it reads.
+// Reads a 3D results file, the parts asked for (df::ResultsParts; a run
+// without bolts has no /bolts, and files written before the 3D energy
+// ledger no energy record); InputError naming the file for anything wrong in what it reads.
 // The root attributes and /fixed are always read.
 Results3 read_results3_h5(const std::string& path, const df::ResultsParts& parts = df::ResultsParts::all());
 

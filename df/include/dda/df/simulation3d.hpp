@@ -26,6 +26,7 @@
 
 #include "dda/common/polyhedron_model.hpp"
 #include "dda/df/block3d.hpp"
+#include "dda/df/bolts3d.hpp"
 #include "dda/df/contact3d_geometry.hpp"
 #include "dda/df/damping.hpp"
 #include "dda/df/energy.hpp"
@@ -102,6 +103,7 @@ struct Model3 {
   std::vector<FixedPoint3> fixed_points;  // on free blocks
   std::vector<PointLoad3> loads;          // on free blocks
   std::vector<MeasurementPoint3> measurements;
+  std::vector<Bolt3> bolts;               // rock bolts (bolts3d.hpp), blocks resolved
   double contact_reach = 0.01;     // m: contacts with |dn0| <= reach are tracked
   double contact_merge = 1e-3;     // m: one pair's candidates closer than this are one contact (see detect_contacts3)
   // m: open-close band (as ContactLaw::tolerance in 2D). A locked contact
@@ -227,10 +229,13 @@ struct Simulation3State {
   std::vector<df::EnergyRecord> energy_log;       // the ledger; empty in files written before it
   df::LinearSolver::WarmStart solver_warm_start;  // PCG's start vector (empty for CHOLMOD)
   bool started = false;                           // initial equilibrium done (or not asked for)
+  std::vector<BoltState3> bolts;                  // per bolt of the model
+  std::vector<std::vector<df::BoltSample>> bolt_histories;
   bool bonds_placed = false;                      // the joints' bonds are placed (simulation3d_bonds.cpp)
 };
 
 class ContactCoupling3;  // df/src/contact_coupling3.hpp
+struct Assembly3;        // df/src/simulation3d_assembly.hpp
 
 class Simulation3 {
  public:
@@ -270,6 +275,10 @@ class Simulation3 {
   // Per measurement point (model order): sample 0 at the start, then one per step.
   const std::vector<std::vector<MeasurementSample3>>& histories() const { return histories_; }
   double time() const { return time_; }
+  // Rock bolts (bolts3d.hpp), model order: state now, and one history each
+  // (sample 0 at the start, then one per step).
+  const std::vector<BoltState3>& bolts() const { return bolts_; }
+  const std::vector<std::vector<df::BoltSample>>& bolt_histories() const { return bolt_histories_; }
   // Wall time of assembly and solves, summed over all steps (contact_search
   // and total are not filled: bench/bench_df3d.cpp times those itself).
   const df::StepTimings& timings() const { return timings_; }
@@ -329,6 +338,18 @@ class Simulation3 {
   void index_points();
   void add_point_terms(int b, double dt, const BlockGeometry3& g, Matrix12d& k, Vector12d& f) const;
   void sample_measurements();
+  // Rock bolts (simulation3d_bolts.cpp): checked and started in the
+  // constructor; their pairs in K's pattern, their springs in K and F, K's
+  // solve with their coupling; moved with their blocks (and broken) at the
+  // end of a step; the ground's work on them and their stored energy.
+  void start_bolts();
+  void restart_bolt_histories();
+  void add_bolt_pairs(std::vector<std::pair<int, int>>& pairs) const;
+  void add_bolt_terms(Assembly3& sys) const;
+  Eigen::VectorXd solve_system(const Eigen::VectorXd& f, double dt);
+  void advance_bolts(const std::vector<Vector12d>& d, const std::vector<Vec3>& old_centroid);
+  double bolt_ground_work(const std::vector<Vector12d>& d) const;
+  double stored_bolt_energy() const;
   // Bonds (simulation3d_bonds.cpp): until the first accepted solve, every
   // detection bonds the contacts of bonded joints in touch, each with its
   // share of the patch, and closes them.
@@ -375,6 +396,8 @@ class Simulation3 {
   std::vector<std::vector<int>> fixed_of_block_, loads_of_block_;  // point indices per block
   std::vector<Vec3> fixed_at_, load_at_, measure_at_;              // where the material points are now
   std::vector<std::vector<MeasurementSample3>> histories_;
+  std::vector<BoltState3> bolts_;
+  std::vector<std::vector<df::BoltSample>> bolt_histories_;
   double time_ = 0;
   // K's lower triangle, its pattern kept while the contacts join the same
   // pairs of blocks (k_pairs_, in contact order), so that the solver keeps
