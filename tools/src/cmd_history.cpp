@@ -1,4 +1,4 @@
-// dda history results.h5 [--csv] [--point NAME ...] [--steps] [-o FILE]
+// dda history results.h5 [--csv] [--point NAME ...] [--steps] [--bolts] [-o FILE]
 //
 // The measurement-point time series of a results file, 2D or 3D, as a
 // summary or as CSV (one row per sample, sample 0 being the start of the run).
@@ -15,6 +15,7 @@
 #include "dda/common/output_guard.hpp"
 #include "dda/df/results.hpp"
 #include "dda/df/results3d.hpp"
+#include "bolt_history.hpp"
 #include "results_points.hpp"
 
 namespace dda::cli {
@@ -29,7 +30,8 @@ constexpr const char* kColumnsHelp =
     "dt_cuts, converged, open, sliding, locked, max_displacement, kinetic_energy, elastic_energy. "
     "A 3D results file: t, then NAME.x NAME.y NAME.z NAME.ux NAME.uy NAME.uz NAME.vx NAME.vy NAME.vz NAME.sxx "
     "NAME.syy NAME.szz NAME.syz NAME.szx NAME.sxy; with --steps: step, t, dt, iterations, dt_cuts, converged, open, "
-    "sliding, locked, max_displacement.";
+    "sliding, locked, max_displacement. With --bolts (2D or 3D): t, then NAME.force (N, tension positive; 2D per unit "
+    "thickness), NAME.length (m), NAME.broken (0 or 1) of every rock bolt.";
 
 void put(std::string& out, double v) {
   char buf[32];
@@ -192,7 +194,7 @@ void add_history_command(CLI::App& app, const GlobalOptions&) {
   struct Options {
     std::string input, output;
     std::vector<std::string> points;
-    bool csv = false, steps = false, acceleration = false;
+    bool csv = false, steps = false, acceleration = false, bolts = false;
   };
   auto opt = std::make_shared<Options>();
   CLI::App* cmd = app.add_subcommand("history", "Time series of the measurement points of a results file");
@@ -203,6 +205,7 @@ void add_history_command(CLI::App& app, const GlobalOptions&) {
   cmd->add_flag("--acceleration", opt->acceleration,
                 "With --csv: add NAME.ax NAME.ay (the acceleration of each point during each step)");
   cmd->add_flag("--steps", opt->steps, "Print the per-step statistics as CSV instead");
+  cmd->add_flag("--bolts", opt->bolts, "Print the rock bolts' forces, lengths and breakage as CSV instead");
   cmd->add_option("-o,--output", opt->output, "Write to this file instead of the standard output");
   cmd->callback([opt] {
     refuse_overwriting_inputs({opt->input}, {opt->output});
@@ -220,7 +223,10 @@ void add_history_command(CLI::App& app, const GlobalOptions&) {
       for (const std::string& name : opt->points) which.push_back(measurement_point_index(r.point_names, name, opt->input));
       if (opt->points.empty())
         for (std::size_t k = 0; k < r.point_names.size(); ++k) which.push_back(k);
-      emit(opt->steps ? steps_csv3(r) : opt->csv ? points_csv3(r, which) : summary3(r, opt->input, which));
+      emit(opt->bolts   ? bolts_csv(r.bolt_names, r.bolt_histories)
+           : opt->steps ? steps_csv3(r)
+           : opt->csv   ? points_csv3(r, which)
+                        : summary3(r, opt->input, which) + bolt_summary(r.bolt_names, r.bolt_histories));
       return;
     }
     const df::Results r = df::read_results_h5(opt->input, df::ResultsParts::records());
@@ -231,12 +237,14 @@ void add_history_command(CLI::App& app, const GlobalOptions&) {
     if (opt->points.empty())
       for (std::size_t k = 0; k < r.point_names.size(); ++k) which.push_back(k);
     std::string text;
-    if (opt->steps)
+    if (opt->bolts)
+      text = bolts_csv(r.bolt_names, r.bolt_histories);
+    else if (opt->steps)
       text = steps_csv(r);
     else if (opt->csv)
       text = points_csv(r, which, opt->acceleration);
     else
-      text = summary(r, opt->input, which);
+      text = summary(r, opt->input, which) + bolt_summary(r.bolt_names, r.bolt_histories);
     emit(text);
   });
 }
