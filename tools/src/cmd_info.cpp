@@ -71,7 +71,7 @@ void add_info_command(CLI::App& app, const GlobalOptions&) {
       for (const bool f : r.fixed) held += f ? 1 : 0;
       std::cout << *input << ": dda-results3d (" << r.source.input_kind << "), " << r.fixed.size() << " blocks ("
                 << held << " fixed), " << r.log.size() << " steps to t = " << t_end << " s, " << r.point_names.size()
-                << " measurement points, "
+                << " measurement points, " << r.bolt_names.size() << " bolts, "
                 << (r.complete ? "complete" : "incomplete (resume with `dda df --resume`)") << "\n";
       std::cout << "blocks from:     " << (r.source.blocks_path.empty() ? "(unknown)" : r.source.blocks_path) << "\n";
       if (r.energy.empty()) {
