@@ -1002,6 +1002,67 @@ PY
   [ ! -e r.h5 ] || fail "a results file was written despite the errors"
 }
 
+# Rock bolts in 3D (docs/scenario.md, "bolts"): a cube hanging on a bolt
+# from a fixed roof block (tests/data/df3_bolt.yaml) settles with the bolt
+# carrying its weight W = 25506 N at L0 + W/k = 2.0025506 m and stays there;
+# a bolt with breaking force W/2 and gravity switched on at t = 0 breaks at
+# t = T/6 = (pi/3) sqrt(m/k) (k (L - L0) reaches W/2 there) within a step,
+# after which the cube falls freely; a stopped and resumed run repeats the
+# uninterrupted one bit for bit; a misplaced end is one sentence naming it.
+case_df3_bolt_run_history() {
+  cp "$SRC/tests/data/df3_bolt.yaml" . || fail "copy the fixture"
+  "$DDA" run df3_bolt.yaml -o out -q || fail "run"
+  "$DDA" history out/results.h5 > summary.txt || fail "history"
+  grep -qE "^b1 +25506" summary.txt || fail "no bolt line in the summary: $(cat summary.txt)"
+  "$DDA" info out/results.h5 | grep -q "1 measurement points, 1 bolts, complete" || fail "dda info: $("$DDA" info out/results.h5)"
+  "$DDA" history out/results.h5 --bolts > b.csv || fail "history --bolts"
+  [ "$(head -1 b.csv)" = "t,b1.force,b1.length,b1.broken" ] || fail "header '$(head -1 b.csv)'"
+  /usr/bin/python3 - <<'PY' || fail "the settled bolt does not carry W at L0 + W/k"
+import csv
+rows = list(csv.DictReader(open("b.csv")))
+assert len(rows) == 21, len(rows)   # t = 0, then 20 steps of 0.01 s
+W, k = 2600 * 9.81, 1.0e7
+for r in rows:
+    assert abs(float(r["b1.force"]) - W) < 1e-3, r
+    assert abs(float(r["b1.length"]) - (2 + W / k)) < 1e-9, r
+    assert r["b1.broken"] == "0", r
+print("force %s N, length %s m" % (rows[-1]["b1.force"], rows[-1]["b1.length"]))
+PY
+  # Weaker than the weight, released at t = 0.
+  sed -e 's/stiffness: 1.0e7}/stiffness: 1.0e6, breaking_force: 12753}/' \
+      -e 's/control: {dt: 0.01, total_time: 0.2, output_interval: 0.1}/control: {dt: 0.001, total_time: 0.1, output_interval: 0.05, initial_equilibrium: false}/' \
+      df3_bolt.yaml > weak.yaml
+  grep -q "breaking_force: 12753" weak.yaml && grep -q "initial_equilibrium: false" weak.yaml || fail "sed weak.yaml"
+  "$DDA" df weak.yaml --blocks out/blocks3d.h5 -o weak.h5 -q || fail "df of the weak bolt"
+  "$DDA" history weak.h5 --bolts > w.csv && "$DDA" history weak.h5 --csv > p.csv || fail "history of the weak bolt"
+  /usr/bin/python3 - <<'PY' || fail "the weak bolt does not break at T/6, or the cube does not then fall freely"
+import csv, math
+bolt = list(csv.DictReader(open("w.csv")))
+cube = list(csv.DictReader(open("p.csv")))
+m, k, g = 2600.0, 1.0e6, 9.81
+t6 = math.pi / 3 * math.sqrt(m / k)
+at = next(i for i, r in enumerate(bolt) if r["b1.broken"] == "1")
+tb = float(bolt[at]["t"])
+print("broke at t = %.4f s, T/6 = %.5f s" % (tb, t6))
+assert t6 <= tb < t6 + 0.001 + 1e-12, (tb, t6)
+assert all(r["b1.broken"] == "1" and float(r["b1.force"]) == 0 for r in bolt[at:])
+z0, v0 = float(cube[at]["cube.z"]), float(cube[at]["cube.vz"])
+t = float(cube[-1]["t"]) - tb
+assert abs(float(cube[-1]["cube.z"]) - (z0 + v0 * t - g * t * t / 2)) < 1e-9
+PY
+  "$DDA" df weak.yaml --blocks out/blocks3d.h5 -o part.h5 --stop-at-step 30 -q || fail "df --stop-at-step"
+  "$DDA" df --resume part.h5 -q || fail "resume"
+  "$DDA" history part.h5 --bolts > w2.csv || fail "history of the resumed run"
+  cmp -s w.csv w2.csv || fail "the resumed run's bolt differs from the uninterrupted one's"
+  sed 's/to: \[0.5, 0.5, 0.5\]/to: [0.5, 0.5, 1.5]/' df3_bolt.yaml > s.yaml
+  expect_error 1 "^dda: s.yaml:[0-9]+: bolts\[0\]\.to lies outside every block\.$" -- \
+    "$DDA" df s.yaml --blocks out/blocks3d.h5 -o r.h5
+  sed 's/to: \[0.5, 0.5, 0.5\]/to: [0.5, 0.5, 2.9]/' df3_bolt.yaml > s.yaml
+  expect_error 1 "^dda: s.yaml:[0-9]+: bolts\[0\]\.to lies in the same block as .from. \(a bolt must join two blocks\)\.$" -- \
+    "$DDA" df s.yaml --blocks out/blocks3d.h5 -o r.h5
+  [ ! -e r.h5 ] || fail "a results file was written despite the errors"
+}
+
 # ---------------------------------------------------------------- hardening
 # docs/reliability.md: strict YAML, write errors, outputs that spare the
 # inputs.
