@@ -21,8 +21,10 @@
 #include <utility>
 #include <vector>
 #include <filesystem>
+#include <memory>
 
 #include "dda/common/error.hpp"
+#include "dda/df/ground_motion3.hpp"
 #include "dda/df/results3d.hpp"
 #include "dda/df/simulation3d.hpp"
 #include "df3_test_models.hpp"
@@ -224,6 +226,39 @@ TEST(Bolts3d, LedgerBooksTheBoltsEnergy) {
   const df::BoltSample& last = h.back();
   EXPECT_NEAR(e.back().bolts, last.force * last.force / (2 * kStiffness), 1e-9);
   EXPECT_GT(dissipated, 0.0);
+}
+
+// The roof moved by the ground (an earthquake in displacement mode, a
+// constant 2 m/s^2 upward from t = 0, no gravity) drags the cube by the
+// bolt: relative to the roof the cube feels -m a, so the bolt stretches to
+// m a / k (1 - cos w t), its first greatest length m a / k (1 + e^(-pi xi))
+// at T/2 (half_cycle_decay). The ground's work on the bolt is booked with
+// the loads (T at the end of the step times the stretch its increment
+// makes), so the residual is again the steps' k/2 dL^2 and nothing else.
+TEST(Bolts3d, GroundMovingTheFixedEndDragsTheCubeAndItsWorkIsBooked) {
+  const double dt = 2e-4, a = 2, w = std::sqrt(kStiffness / kMass), period = 2 * kPi / w;
+  Model3 m = hanging_cube(dt);
+  m.gravity = {0, 0, 0};
+  m.earthquake = {std::make_shared<GroundMotion3>(std::vector<double>{0, 1}, std::vector<Vec3>{{0, 0, a}, {0, 0, a}}),
+                  make_ground_input_mode3("displacement")};
+  Simulation3 sim(m);
+  run_for(sim, dt, static_cast<int>(0.75 * period / dt));
+  const auto& h = sim.bolt_histories()[0];
+  const auto peaks = extremes(h, dt, +1);
+  ASSERT_EQ(peaks.size(), 1u);
+  const double swing = kMass * a / kStiffness * (1 + half_cycle_decay(w, dt));
+  EXPECT_NEAR(peaks[0].second - kRest, swing, 1e-4 * swing);
+  EXPECT_NEAR(peaks[0].first, period / 2, dt);
+  const auto& e = sim.energy_log();
+  double dissipated = 0;
+  for (std::size_t s = 1; s < h.size(); ++s) {
+    const double dl = h[s].length - h[s - 1].length;
+    dissipated += 0.5 * kStiffness * dl * dl;
+  }
+  std::printf("ground's work %.6f J, residual %.9f J = the steps' k dL^2/2 %.9f J\n", e.back().load_work,
+              e.back().residual, dissipated);
+  EXPECT_GT(e.back().load_work, 0.0);
+  EXPECT_NEAR(e.back().residual, dissipated, 1e-9 * e.back().load_work);
 }
 
 // Resumed from a checkpoint (state / restore, and through the results
