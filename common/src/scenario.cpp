@@ -21,14 +21,14 @@ namespace {
 // would be silently ignored, so it is an error naming it (with the section
 // that does the job, where there is one). The forward run reads materials,
 // joints, loading, fixed and control in both (each dimension its own keys);
-// bolts and boundaries are 2D only so far; `output` serves `dda run` in both.
+// bolts are 2D only so far; `output` serves `dda run` in both.
 struct OtherDimension {
   const char* key;
   const char* instead;  // "" if none
 };
 const OtherDimension kOnly2d[] = {
     {"joint_sets", "fracture_sets"}, {"lines", "planes"}, {"traces", "fracture_files"}, {"geometry", ""},
-    {"bolts", ""},                   {"boundaries", ""}};
+    {"bolts", ""}};
 const char* const kOnly3d[] = {"fracture_sets", "persistent_sets", "planes", "fracture_files", "trace_planes"};
 
 void check_dimension(const YamlNode& root) {

@@ -98,6 +98,7 @@ Simulation3::Simulation3(Model3 model)
     throw std::invalid_argument("Model3: an earthquake needs its mode (loading or displacement)");
   make_friction_laws();
   index_points();
+  check_viscous();
   start_energy();
   // w0: half the largest side of the model's bounding box (the 2D solver
   // takes half the height); it scales the displacement limit of a step.
@@ -208,6 +209,7 @@ void Simulation3::assemble(double dt) {
       sys.add_f(l.block, f);
     }
   }
+  if (model_.viscous) add_viscous_terms(dt, sys);
   for_each_range(block_loads_, [this](Assembly3& range, const std::vector<int>& mine) {
     for (const int k : mine) {
       const Contact3& c = contacts_[static_cast<std::size_t>(k)];

@@ -36,6 +36,7 @@
 #include "dda/df/linear_solver.hpp"
 #include "dda/df/start_up.hpp"
 #include "dda/df/step_timings.hpp"
+#include "dda/df/viscous_boundary3.hpp"
 
 namespace dda::df3 {
 
@@ -98,6 +99,8 @@ struct Model3 {
   // joints, and no cost. Saturation per set: JointProperties::saturation.
   std::optional<df::WaterTable<3>> water;
   GroundInput3 earthquake;         // none while earthquake.motion is null; the fixed blocks are the foundation
+  // Non-reflecting boundary faces and the incident wave (viscous_boundary3.hpp); none: no cost.
+  std::optional<ViscousBoundary3> viscous;
   std::vector<FixedPoint3> fixed_points;  // on free blocks
   std::vector<PointLoad3> loads;          // on free blocks
   std::vector<MeasurementPoint3> measurements;
@@ -219,6 +222,7 @@ struct Simulation3State {
 };
 
 class ContactCoupling3;  // df/src/contact_coupling3.hpp
+struct Assembly3;        // df/src/simulation3d_assembly.hpp
 
 class Simulation3 {
  public:
@@ -317,6 +321,13 @@ class Simulation3 {
   void index_points();
   void add_point_terms(int b, double dt, const BlockGeometry3& g, Matrix12d& k, Vector12d& f) const;
   void sample_measurements();
+  // The viscous boundary (simulation3d_waves.cpp): checked in the
+  // constructor; its dashpots and incident traction in K and F; their
+  // energy in the step's ledger record.
+  void check_viscous() const;
+  Vec3 incident_velocity(double dt) const;  // v_in's mean over the step (zero while settling)
+  void add_viscous_terms(double dt, Assembly3& sys) const;
+  void add_viscous_work(const std::vector<Vector12d>& d, double dt, df::EnergyRecord& e) const;
   // The energy ledger (simulation3d_energy.cpp): started afresh from the
   // current state; a step's work and losses, taken from the configuration
   // at its start with the forces as assembled (before finish_step moves the
