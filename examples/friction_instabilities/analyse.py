@@ -20,6 +20,9 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from summary_file import write_summary  # noqa: E402
+
 MASS, WEIGHT = 1000.0, 1000.0 * 9.81
 # The laws of make_cases.py.
 A, B, DC, MU0, V0 = 0.01, 0.015, 1.0e-4, 0.6, 1.0e-6
@@ -251,10 +254,7 @@ def main():
     plt.close(fig)
 
     s["problems"] = problems
-    tmp = os.path.join(out, "summary.json.tmp")
-    with open(tmp, "w") as f:
-        json.dump(s, f, indent=1)
-    os.replace(tmp, os.path.join(out, "summary.json"))
+    write_summary(os.path.join(out, "summary.json"), s)
     print(json.dumps({k: v for k, v in s.items() if k != "stability_map"}, indent=1))
     print("stability map: %d of %d points on the side of the boundary theory puts them" % (agree, len(points)))
     for p in problems:

@@ -24,6 +24,7 @@ import numpy as np  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import make_slab  # noqa: E402
+from summary_file import write_summary  # noqa: E402
 
 SLIDING, STUCK, OPEN = 1, 0, 2
 G = 9.81
@@ -283,10 +284,7 @@ def main():
     plt.close(fig)
 
     summary["problems"] = problems
-    tmp = os.path.join(out, "slab_summary.json.tmp")
-    with open(tmp, "w") as f:
-        json.dump(summary, f, indent=1)
-    os.replace(tmp, os.path.join(out, "slab_summary.json"))
+    write_summary(os.path.join(out, "slab_summary.json"), summary)
     print(json.dumps(summary, indent=1))
     for p in problems:
         print("PROBLEM: " + p)

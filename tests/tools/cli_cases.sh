@@ -1216,8 +1216,7 @@ case_plot_results_3d() {
   cp "$SRC/tests/data/df3_incline.yaml" . || fail "copy the fixture"
   "$DDA" run df3_incline.yaml -o out -q || fail "run"
   "$DDA" plot out/results.h5 -o figs -q || fail "plot every figure"
-  every_png figs blocks sections contacts histories steps
-  [ ! -e figs/energy.png ] || fail "a 3D run has no energy record to draw"
+  every_png figs blocks sections contacts histories energy steps
   "$DDA" plot out/results.h5 -o v.png --look 225/30 plan --times 0 1 --vectors --color-by velocity -q \
     || fail "plot views"
   "$DDA" plot out/results.h5 -o s.svg --kind sections --section z=4 y=5 -q || fail "plot sections"
@@ -1235,8 +1234,8 @@ assert ax.get_xlabel() == "x east (m)" and ax.get_ylabel() == "z up (m)", (ax.ge
 lo, hi = ax.get_xlim()
 assert lo <= 0 and hi >= 10 and hi - lo < 11, (lo, hi)
 PY
-  expect_error 1 "out/results.h5: a 3D results file keeps no energy record" -- \
-    "$DDA" plot out/results.h5 -o x.png --kind energy
+  "$DDA" plot out/results.h5 -o e.png --kind energy -q || fail "the 3D energy figure"
+  every_png . e
   expect_error 1 "dda: --look 30: give TREND/PLUNGE" -- "$DDA" plot out/results.h5 -o x.png --look 30
 }
 
@@ -1303,11 +1302,10 @@ class Page(HTMLParser):
                 self.external.append(a[k])
 p = Page()
 p.feed(open(path, encoding="utf-8").read())
-kinds = ["blocks", "contacts", "histories", "steps"] + (["energy"] if dim == 2 else ["sections"])
+kinds = ["blocks", "contacts", "histories", "steps", "energy"] + ([] if dim == 2 else ["sections"])
 want = {"figure-" + k for k in kinds} | {"table-" + t for t in ("provenance", "model", "run", "points")}
 want |= {"provenance", "model", "run", "energy-balance", "warnings", "figures", "measurement-points", "scenario"}
-if dim == 2:
-    want.add("table-energy")
+want.add("table-energy")
 missing = want - p.ids
 assert not missing, "missing: %s" % sorted(missing)
 assert not p.external, p.external
@@ -1329,7 +1327,8 @@ case_report_html() {
   [ ! -e out3/report.html ] || fail "a run with plots: false wrote a report"
   "$DDA" report out3 -o rep3 -q || fail "dda report on a 3D run folder"
   check_report rep3/report.html 3
-  grep -q "keeps no energy record" rep3/report.html || fail "the 3D report does not say why there is no energy"
+  grep -q "residual (penalty springs, implicit step)</th><td>[^<]* k\?J = " rep3/report.html \
+    || fail "the 3D report has no energy balance in J"
   expect_error 1 "out/blocks.h5: is not a results file \(dda-blocks\)" -- "$DDA" report out/blocks.h5 -o x
   mkdir empty
   expect_error 1 "empty: holds no results.h5" -- "$DDA" report empty -o x

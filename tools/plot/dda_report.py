@@ -83,7 +83,8 @@ def build(r):
     ]
     balance = facts.energy_balance(r)
     sections.append(("Energy balance", page.key_value_table(balance, "energy") if balance else
-                     "<p>A 3D results file keeps no energy record.</p>"))
+                     "<p>The results file keeps no energy record (a 3D file written before the 3D energy "
+                     "ledger).</p>"))
     sections.append(("Warnings", "".join(f'<p class="warning">{page.esc(w)}</p>' for w in warnings)
                      if warnings else '<p id="no-warnings">None.</p>'))
     sections.append(("Figures", "".join(figures)))

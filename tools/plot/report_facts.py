@@ -82,7 +82,8 @@ def run(r):
 
 
 def energy_balance(r):
-    """Rows of the energy balance at the end (2D), or None (3D keeps none)."""
+    """Rows of the energy balance at the end, or None without an energy
+    record (3D files written before the 3D ledger)."""
     e = r.energy
     if not e or len(e.get("time", [])) == 0:
         return None
@@ -90,7 +91,7 @@ def energy_balance(r):
     work = sum(e[k] for k in ("gravity_work", "load_work") if k in e)
     losses = sum(e[k] for k in ("friction", "damping", "breakage", "radiation") if k in e)
     moved = np.maximum(np.abs(work), np.abs(stored - stored[0]) + losses)
-    factor, unit = readable_unit([moved[-1], work[-1]], "J/m")
+    factor, unit = readable_unit([moved[-1], work[-1]], "J/m" if r.dim == 2 else "J")
     share = e["residual"][-1] / moved[-1] if moved[-1] > 0 else 0.0
     return [("work done (gravity, loads)", f"{work[-1] * factor:.4g} {unit}"),
             ("change of stored energy", f"{(stored[-1] - stored[0]) * factor:.4g} {unit}"),

@@ -137,7 +137,7 @@ class Results:
         self.step_states = {s: self._arr(f"steps/{s}", int, required=False) for s in STATE_NAMES}
 
     def _read_energy(self):
-        """The energy ledger (2D only; 3D files keep none)."""
+        """The energy ledger (none in 3D files written before the 3D ledger)."""
         self.energy = {}
         if "energy/time" not in self._f:
             return

@@ -8,7 +8,7 @@ Kinds (the figure's file name is KIND.png when -o is a folder):
              sections through the model's middle)
   contacts   forces and states of the contacts of the last step
   histories  measurement points against time
-  energy     2D only: the energy ledger against time
+  energy     the energy ledger against time (2D, and 3D from the 3D ledger on)
   steps      step length, iterations per step, contacts by state
 """
 
@@ -20,7 +20,7 @@ import results_series as series
 import results_views3d as v3
 
 KINDS_2D = ("blocks", "contacts", "histories", "energy", "steps")
-KINDS_3D = ("blocks", "sections", "contacts", "histories", "steps")
+KINDS_3D = ("blocks", "sections", "contacts", "histories", "energy", "steps")
 DEFAULT_LOOKS_3D = ("north", "west", "plan")
 
 
@@ -38,7 +38,10 @@ class FigureOptions:
 
 
 def kinds_of(r):
-    return KINDS_3D if r.dim == 3 else KINDS_2D
+    """The figures of a results file: a 3D file written before the 3D energy
+    ledger has no energy record to draw."""
+    kinds = KINDS_3D if r.dim == 3 else KINDS_2D
+    return kinds if r.energy else tuple(k for k in kinds if k != "energy")
 
 
 def check_kind(r, kind):
@@ -46,7 +49,8 @@ def check_kind(r, kind):
     if kind in kinds_of(r):
         return None
     if kind == "energy":
-        return f"{r.path}: a 3D results file keeps no energy record (docs/formats.md); --kind energy needs a 2D run"
+        return (f"{r.path}: keeps no energy record (a 3D results file written before the 3D energy ledger); "
+                "run it again for --kind energy")
     if kind == "sections":
         return f"{r.path}: --kind sections is for 3D results; a 2D run is drawn whole with --kind blocks"
     return f"{r.path}: --kind {kind} does not apply to a results file (one of {', '.join(kinds_of(r))})"

@@ -1,5 +1,5 @@
 """Time series of a results file: the measurement points' displacement and
-speed, the energy ledger (2D), and the run itself (step length, open-close
+speed, the energy ledger, and the run itself (step length, open-close
 iterations per step, contacts by state)."""
 
 import numpy as np
@@ -50,11 +50,10 @@ def histories_figure(r):
 
 
 def energy_figure(r):
-    """Stored energies above; work done and losses (cumulative) below. 2D
-    only: a 3D results file keeps no energy record."""
+    """Stored energies above; work done and losses (cumulative) below."""
     e = r.energy
     t = e["time"]
-    unit = "J/m"  # 2D: per metre of thickness
+    unit = "J/m" if r.dim == 2 else "J"  # 2D: per metre of thickness
     fig, (top, bottom) = plt.subplots(2, 1, sharex=True, figsize=(8, 6.4))
     everything = np.concatenate([e[k] for k in STORED + WORK + LOSSES if k in e])
     factor, shown = readable_unit(everything, unit)
