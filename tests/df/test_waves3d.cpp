@@ -10,8 +10,8 @@
 // at sqrt(E / rho) = the constrained-modulus speed the dashpots take: the
 // column is the 1D medium. 3D contacts carry no tension, so the column is
 // held together by two opposite point loads (on the lowest and the highest
-// plate), far above the waves' stresses; the run starts from their
-// equilibrium (initial_equilibrium).
+// plate), well above the waves' stresses; the run starts from their
+// equilibrium (the plates' initial stress, wave_test_models3.hpp).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -102,14 +102,17 @@ TEST(Waves3, LayerOnAnElasticHalfSpaceHasThe1DTransferFunction) {
 // 25 / 4. Thin plates: their mass per area, omega rho h = 0.022 Z at 5 Hz,
 // shifts |T| by less than 1 %. Input: 8 cycles of 5 Hz with a one-cycle
 // Hann taper at each end; |T| is the upper plate's largest velocity over
-// the input amplitude (within 5 %, the 2D test's tolerance).
-// DISABLED: fails so far (|T| 0.89 / 0.97 / 74 for the three ratios): the
-// two plates do not start from the point loads' equilibrium; to be found.
-TEST(Waves3, DISABLED_V9JointTransmissionMatchesTheDisplacementDiscontinuityModel) {
+// the input amplitude (within 5 %, the 2D test's tolerance). Obtained:
+// 0.7047, 0.8888, 0.9660. The precompression, 5e3 Pa (3.5 times the
+// incident wave's Z v = 1414 Pa), closes the softest joint by 0.23 mm,
+// well inside the contact merge distance (wave_test_models3.hpp says what
+// 1e5 Pa did: eight contacts, |T| 0.89 / 0.97 / 74).
+TEST(Waves3, V9JointTransmissionMatchesTheDisplacementDiscontinuityModel) {
   Column3 c;
   c.plates = 2;
   c.height = 0.25;
   c.viscous_top = true;
+  c.precompression = 5e3;
   const double amplitude = 1e-3, omega = 2 * M_PI * 5;
   const double impedance = 2000 * std::sqrt(1e9 / 2000.0);
   for (const double ratio : {0.5, 1.0, 2.0}) {
@@ -119,6 +122,7 @@ TEST(Waves3, DISABLED_V9JointTransmissionMatchesTheDisplacementDiscontinuityMode
     m.control.total_time = 1.7;
     Simulation3 sim(std::move(m));
     sim.run();
+    ASSERT_EQ(sim.contacts().size(), 4u) << "one contact at each corner of the joint";
     double peak = 0;
     for (const MeasurementSample3& s : sim.histories()[1]) peak = std::max(peak, std::abs(s.velocity.z()));
     const double expected = 1 / std::sqrt(1 + std::pow(1 / (2 * ratio), 2));
@@ -127,31 +131,32 @@ TEST(Waves3, DISABLED_V9JointTransmissionMatchesTheDisplacementDiscontinuityMode
   }
 }
 
-double max_stored(const Simulation3& sim) {
-  double e = 0;
-  for (const df::EnergyRecord& r : sim.energy_log()) e = std::max(e, r.stored() - sim.energy_log().front().stored());
-  return e;
-}
-
 // A uniform column of 20 plates (50 m, c = 707.1 m/s), a Hann pulse of
-// 1e-3 m/s and 0.05 s sent up through the base. At the free top the
-// particle velocity doubles (2e-3 m/s within 5 %; the top centroid is 1.25
-// m below the surface, 3.5 ms against a 50 ms pulse). Then the reflected
-// pulse leaves through the base. The ledger: the incident traction's work
-// 2 Z A v_in . v while the pulse enters (v = v_in there: the base matches
-// the column's impedance) and the radiation Z A v^2 of its entry and of its
-// exit each come to E = Z A amplitude^2 3 tau / 8 (the integral of sin^4),
-// so both end at 2 E (within 2 %), what stays in the column below 1 % of
-// the most it held, and the residual below 1 % of the work.
-// DISABLED: fails so far (top 0.024 m/s, work 2.8 kJ against 1.3 J): the
-// 20-plate column rings from its point loads; to be found.
-TEST(Waves3, DISABLED_PulseDoublesAtTheTopAndLeavesThroughTheBaseWithItsEnergy) {
+// 1e-3 m/s and 0.1 s (as the 2D bar's: 28 plates long) sent up through
+// the base. At the free top the particle velocity doubles (2e-3 m/s within
+// 5 %, the 2D test's tolerance; the top centroid is 1.25 m below the
+// surface, 3.5 ms against a 100 ms pulse: 0.3 %). The pulse is back at the
+// base after the round trip 2 L / c = 0.141 s, later than its 0.1 s, so
+// entry and exit do not overlap; it has left by 0.3 s. The ledger then:
+// the incident traction's work 2 Z A v_in . v while the pulse enters (v =
+// v_in there: the base matches the column's impedance) and the radiation
+// Z A v^2 of its entry and of its exit each come to E = Z A amplitude^2 3
+// tau / 8 (the integral of sin^4), so both end at 2 E (within 5 %, as the
+// top). The point loads' work, P (u_bottom - u_top) with the centroids'
+// displacements, goes with the column's static strain energy (its first
+// order change is the same P (u_bottom - u_top)), so the wave's own energy
+// is the change in stored energy less that work: below 1 % of 2 E at the
+// end. The residual, what the implicit step dissipates, is first order in
+// dt: 2.2 % of the incident work at dt = 5e-4 s, 1.1 % at 2.5e-4 s; it must
+// be positive and below 3 %. Obtained at 5e-4: top 1.955e-3 m/s, incident
+// work 1.017 x 2 E, radiation 0.995 x 2 E.
+TEST(Waves3, PulseDoublesAtTheTopAndLeavesThroughTheBaseWithItsEnergy) {
   Column3 c;
   c.plates = 20;
-  const double amplitude = 1e-3, tau = 0.05;
+  const double amplitude = 1e-3, tau = 0.1;
   Model3 m = testing::wave_column3(c, testing::hann_pulse3(amplitude, tau));
   m.control.dt = 5e-4;
-  m.control.total_time = 0.25;  // at the top by 0.1 s, out through the base by 0.2 s
+  m.control.total_time = 0.3;
   Simulation3 sim(std::move(m));
   sim.run();
 
@@ -161,14 +166,22 @@ TEST(Waves3, DISABLED_PulseDoublesAtTheTopAndLeavesThroughTheBaseWithItsEnergy) 
 
   const double area = c.width * c.width, impedance = 2000 * std::sqrt(1e9 / 2000.0);
   const double carried = impedance * area * amplitude * amplitude * 3 * tau / 8;
+  const auto moved_up = [&](std::size_t plate) {
+    const std::vector<MeasurementSample3>& h = sim.histories()[plate];
+    return h.back().displacement.z() - h.front().displacement.z();
+  };
+  const double loads_work = c.precompression * area * (moved_up(0) - moved_up(19));
+  const df::EnergyRecord& first = sim.energy_log().front();
   const df::EnergyRecord& last = sim.energy_log().back();
-  const double incident_work = last.load_work;  // the point loads' work is back to zero with the column's strain
-  EXPECT_NEAR(incident_work, 2 * carried, 0.02 * 2 * carried);
-  EXPECT_NEAR(last.radiation, 2 * carried, 0.02 * 2 * carried);
-  EXPECT_LT(last.stored() - sim.energy_log().front().stored(), 0.01 * max_stored(sim));
-  EXPECT_LT(std::abs(last.residual), 0.01 * incident_work);
+  const double incident_work = last.load_work - loads_work;
+  EXPECT_NEAR(incident_work, 2 * carried, 0.05 * 2 * carried);
+  EXPECT_NEAR(last.radiation, 2 * carried, 0.05 * 2 * carried);
+  EXPECT_LT(std::abs(last.stored() - first.stored() - loads_work), 0.01 * 2 * carried);
+  EXPECT_GT(last.residual, 0);
+  EXPECT_LT(last.residual, 0.03 * incident_work);
   RecordProperty("top_velocity", std::to_string(top));
-  RecordProperty("radiation_over_carried", std::to_string(last.radiation / carried));
+  RecordProperty("incident_work_over_2E", std::to_string(incident_work / (2 * carried)));
+  RecordProperty("radiation_over_2E", std::to_string(last.radiation / (2 * carried)));
   RecordProperty("residual_over_work", std::to_string(last.residual / incident_work));
 }
 

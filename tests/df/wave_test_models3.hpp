@@ -5,9 +5,26 @@
 // dashpots on the top, and a measurement point at every plate's centroid.
 // No gravity. 3D contacts carry no tension and no shear without normal
 // force, so two opposite point loads, on the lowest and the highest plate's
-// centroids, press the column together (`precompression` over the plates'
-// area, far above the waves' stresses); the run starts from their
-// equilibrium, and the loads do no net work over a wave that passes.
+// centroids, press the column together (`precompression` p over the
+// plates' area, well above the waves' stresses); the loads do no net work
+// over a wave that passes.
+//
+// The column starts in the loads' equilibrium: the plates carry it as
+// initial stress, sigma_zz = -p in the inner plates and -p / 2 in the end
+// ones (a constant-strain block loaded at its centroid and at one face,
+// h / 2 away, by P = p A: virtual work P h / 2 = sigma A h). Left to the
+// start-up relaxation, a 20-plate column got only part of the way: a static
+// solve with pseudo step dts takes out the imbalance of the column's first
+// mode (omega = pi c / L = 44 rad/s) by a factor 1 + (omega dts)^2 / 2,
+// 1.024 at dts = 5 ms, so its 50 solves left 28 %, which rang at 0.02 m/s,
+// twenty times the pulse. What remains, the contacts' closure, is stiff
+// and relaxes in a few solves.
+//
+// The closure p / kappa must stay far below the contact merge distance (1
+// mm; docs/solver3d.md, "Contact identity"): beyond it the vertex of each
+// plate on the other's face are two contacts at every corner, eight in
+// all, and the joint is twice as stiff (a precompression of 1e5 Pa closed
+// a joint of kappa = 2.2e7 Pa/m by 4.5 mm).
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -89,6 +106,12 @@ inline Model3 wave_column3(const Column3& c, const History3& incident) {
   m.loads.push_back({0, Vec3(0.5 * c.width, 0.5 * c.width, 0.5 * c.height), History3{{0.0}, {Vec3(0, 0, p)}}});
   m.loads.push_back({c.plates - 1, Vec3(0.5 * c.width, 0.5 * c.width, (c.plates - 0.5) * c.height),
                      History3{{0.0}, {Vec3(0, 0, -p)}}});
+  for (int k = 0; k < c.plates; ++k) {
+    const bool end = k == 0 || k == c.plates - 1;
+    Vector6d stress = Vector6d::Zero();
+    if (c.plates > 1) stress[2] = -(end ? 0.5 : 1.0) * c.precompression;
+    m.initial_stress.push_back(stress);
+  }
   m.gravity = Vec3::Zero();
   m.normal_penalty = c.normal_penalty > 0 ? c.normal_penalty : 1000 * stiffest * area / c.height / 4;
   m.shear_penalty = m.normal_penalty;
