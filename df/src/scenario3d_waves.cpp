@@ -85,13 +85,22 @@ void add_viscous_boundary3(const YamlNode& root, const PolyhedronModel& blocks, 
       earthquake().fail_key("mode", "incident sends the wave in through the viscous base, and boundaries.viscous "
                                     "does not list bottom (add it there)");
     // The record is the outcrop motion: the wave sent up has half its
-    // velocity; after the record it stops (as 2D).
+    // velocity, sampled (exactly) at the record's times and at most a step
+    // apart between them, as 2D refines its record, since the table is
+    // linear between rows and the velocity of a piecewise-linear
+    // acceleration is not; after the record it stops (as 2D).
     const GroundMotion3& g = *m.earthquake.motion;
-    for (const double t : g.times()) {
-      v.incident_velocity.t.push_back(t);
-      v.incident_velocity.value.push_back(0.5 * g.velocity(t));
-    }
     const double step = m.control.dt > 0 ? m.control.dt : 1e-3;
+    const std::vector<double>& times = g.times();
+    for (std::size_t i = 0; i < times.size(); ++i) {
+      const int parts =
+          i == 0 ? 1 : std::max(1, static_cast<int>(std::ceil((times[i] - times[i - 1]) / step * (1 - 1e-9))));
+      for (int k = 1; k <= parts; ++k) {
+        const double t = k == parts ? times[i] : times[i - 1] + (times[i] - times[i - 1]) * k / parts;
+        v.incident_velocity.t.push_back(t);
+        v.incident_velocity.value.push_back(0.5 * g.velocity(t));
+      }
+    }
     v.incident_velocity.t.push_back(g.end() + step);
     v.incident_velocity.value.push_back(Vec3::Zero());
   }
