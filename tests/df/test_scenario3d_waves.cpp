@@ -106,6 +106,22 @@ TEST(Scenario3dWaves, BottomAndTopFacesAndTheIncidentWave) {
   EXPECT_EQ(s.model.earthquake.mode->body_acceleration(*s.model.earthquake.motion, 0.0, 0.01), Vec3::Zero());
 }
 
+// A coarse record, a_z rising from 0 to 1 m/s^2 over its one interval of
+// 10 ms: the outcrop velocity is t^2 / 0.02 (m/s), a parabola, which the
+// incident wave's table (linear between rows) follows only if it is sampled
+// at most a step (0.5 ms) apart: v_in(5 ms) = 0.5 x 0.005^2 / 0.02 =
+// 6.25e-4 m/s (from the record's two rows alone, 1.25e-3).
+TEST(Scenario3dWaves, IncidentWaveFollowsTheRecordBetweenItsRows) {
+  const std::string path = write_record();
+  std::FILE* f = std::fopen((::testing::TempDir() + "ramp.csv").c_str(), "w");
+  ASSERT_NE(f, nullptr);
+  std::fputs("t,a\n0,0\n0.01,1\n", f);
+  std::fclose(f);
+  const DfScenario3 s = read_df3_scenario(YamlNode::load_string(replaced(kScenario, "eq.csv", "ramp.csv"), path),
+                                          column_blocks(4), "b3.h5");
+  EXPECT_NEAR(s.model.viscous->incident_velocity.at(0.005).z(), 6.25e-4, 1e-15);
+}
+
 // Side faces: every plate has its west face (box face 4, x = 0) on the
 // west side; no face is an input face without an incident wave.
 TEST(Scenario3dWaves, SidesSelectEveryFaceOnThem) {
