@@ -21,12 +21,23 @@ inline double shear_wave_speed(double young, double poisson, double density) {
   return std::sqrt(young / (2 * (1 + poisson) * density));
 }
 
-// D for outward unit normal n (N s/m^3: a traction per velocity).
+// D for outward unit normal n (N s/m^3: a traction per velocity). The
+// tangential part is rho Vs s s^T in 2D (s the tangent, as the 2D solver
+// always computed it, so that 2D runs stay bit for bit) and
+// rho Vs (I - n n^T) in 3D (two tangents); the two are equal but for
+// rounding.
 template <int N>
 Eigen::Matrix<double, N, N> lysmer_dashpot(double density, double vp, double vs,
                                            const Eigen::Matrix<double, N, 1>& n) {
-  const Eigen::Matrix<double, N, N> normal = n * n.transpose();
-  return density * (vp * normal + vs * (Eigen::Matrix<double, N, N>::Identity() - normal));
+  static_assert(N == 2 || N == 3, "a dashpot in 2D or 3D");
+  Eigen::Matrix<double, N, N> tangential;
+  if constexpr (N == 2) {
+    const Eigen::Matrix<double, 2, 1> s(-n.y(), n.x());
+    tangential = vs * s * s.transpose();
+  } else {
+    tangential = vs * (Eigen::Matrix<double, N, N>::Identity() - n * n.transpose());
+  }
+  return density * (vp * n * n.transpose() + tangential);
 }
 
 }  // namespace dda::df
