@@ -63,6 +63,7 @@ void write_checkpoint3(h5::Writer& w, const Simulation3State& s) {
   w.attr_f64(g.get(), "dt", s.dt);
   w.attr_i32(g.get(), "step_count", static_cast<std::int32_t>(s.log.size()));
   w.attr_i32(g.get(), "started", s.started ? 1 : 0);
+  w.attr_i32(g.get(), "bonds_placed", s.bonds_placed ? 1 : 0);
   w.attr_text(g.get(), "description",
               "complete 3D simulation state after step step_count; with /steps (the log) and /series (the "
               "histories) it is what `dda df --resume` continues from");
@@ -109,6 +110,8 @@ void write_checkpoint3(h5::Writer& w, const Simulation3State& s) {
   vec2("slip_dir", [](const Contact3& x) { return x.slip_dir; }, "1", "unit slip direction on (t1, t2) while sliding");
   vec2("slip", [](const Contact3& x) { return x.slip; }, "m", "slip of i relative to j in the last iterate (t1, t2)");
   one("normal_force", [](const Contact3& x) { return x.normal_force; }, "N", "compression positive");
+  w.i32(c, "bonded", ints(cs, [](const Contact3& x) { return x.bonded ? 1 : 0; }), "", "1: the joint's bond is intact");
+  one("bond_area", [](const Contact3& x) { return x.bond_area; }, "m^2", "share of the face-to-face patch bonded");
   vec2("shear_force", [](const Contact3& x) { return x.shear_force; }, "N", "shear force on i (t1, t2)");
   one("strength", [](const Contact3& x) { return x.strength; }, "N", "the friction law's shear strength");
   one("slip_velocity", [](const Contact3& x) { return x.slip_velocity; }, "m/s", "slip speed of the last iterate");
@@ -152,6 +155,8 @@ Simulation3State read_checkpoint3(const h5::Reader& r, const std::vector<std::si
   // Files written before the attribute existed come from runs that had no
   // initial equilibrium to make: they have started.
   s.started = r.attr_int(g.get(), "started", "/checkpoint").value_or(1) != 0;
+  // Files written before bonds had none to place.
+  s.bonds_placed = r.attr_int(g.get(), "bonds_placed", "/checkpoint").value_or(1) != 0;
 
   const std::size_t nb = vertex_counts.size();
   std::size_t nv = 0;
@@ -185,6 +190,10 @@ Simulation3State read_checkpoint3(const h5::Reader& r, const std::vector<std::si
              t1 = table(r, c + "t1", nc, 3), t2 = table(r, c + "t2", nc, 3), pi = table(r, c + "point_i", nc, 3),
              pj = table(r, c + "point_j", nc, 3);
   const std::vector<double> friction = r.f64(c + "friction").data;
+  // Bonds: none in files written before them.
+  const bool has_bonds = r.exists(c + "bonded");
+  const auto bonded = has_bonds ? ivec("bonded", 1) : std::vector<std::int64_t>(nc, 0);
+  const auto bond_area = has_bonds ? table(r, c + "bond_area", nc, 1) : std::vector<double>(nc, 0.0);
   std::size_t fpos = 0;
   for (std::size_t k = 0; k < nc; ++k) {
     Contact3 x;
@@ -201,6 +210,8 @@ Simulation3State read_checkpoint3(const h5::Reader& r, const std::vector<std::si
     x.slip_dir = row2(slip_dir, k);
     x.slip = row2(slip, k);
     x.normal_force = normal_force[k];
+    x.bonded = bonded[k] != 0;
+    x.bond_area = bond_area[k];
     x.shear_force = row2(shear, k);
     x.strength = strength[k];
     x.slip_velocity = slip_velocity[k];

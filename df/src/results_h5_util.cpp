@@ -149,7 +149,7 @@ void write_energy(h5::Writer& w, const std::vector<EnergyRecord>& log, const std
       "work of point loads and moving fixed points, cumulative");
   col("friction", [](const EnergyRecord& e) { return e.friction; }, "friction dissipation, cumulative");
   col("damping", [](const EnergyRecord& e) { return e.damping; }, "kinetic energy removed by dynamic < 1 and work of the viscous damping (control.damping), cumulative");
-  col("breakage", [](const EnergyRecord& e) { return e.breakage; }, "energy released by broken bolts, cumulative");
+  col("breakage", [](const EnergyRecord& e) { return e.breakage; }, "energy released by broken bolts (and in 3D joint bonds), cumulative");
   col("radiation", [](const EnergyRecord& e) { return e.radiation; },
       "energy absorbed by the viscous boundaries, cumulative");
   col("residual", [](const EnergyRecord& e) { return e.residual; },

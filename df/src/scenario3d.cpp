@@ -47,13 +47,9 @@ struct Parsed3 {
   std::optional<df::WaterTable<3>> water;
 };
 
-// The 2D joint keys the 3D contacts cannot honour: a contact is a point with
-// no area to carry a bond, and its springs are the run's (control).
+// The 2D joint keys the 3D contacts cannot honour: their springs are the
+// run's (control).
 void check_joint3(const YamlNode& n) {
-  for (const char* key : {"cohesion", "tensile_strength"})
-    if (n.has(key) && n.number(key, Range::non_negative()) != 0)
-      n.fail_key(key, "is not modelled by the 3D solver yet (its contacts are points with no area to carry a "
-                      "bond); leave it out or give 0");
   for (const char* key : {"normal_penalty", "shear_penalty"})
     if (n.has(key))
       n.fail_key(key, std::string("is per joint set in 2D only; in 3D give control.") + key + " (every contact)");

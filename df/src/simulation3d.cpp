@@ -118,14 +118,12 @@ Simulation3::Simulation3(Simulation3&&) noexcept = default;
 Simulation3& Simulation3::operator=(Simulation3&&) noexcept = default;
 
 void Simulation3::make_friction_laws() {
-  auto add = [&](const df::JointProperties& joint, const std::string& what) {
-    if (joint.cohesion != 0 || joint.tensile_strength != 0)
-      throw InputError("3D joints: " + what +
-                       " has cohesion or tensile strength, which the 3D solver does not model yet; set them to 0.");
+  auto add = [&](const df::JointProperties& joint) {
+    bonds_used_ = bonds_used_ || joint.cohesion > 0 || joint.tensile_strength > 0;
     friction_.push_back(df::make_friction_law(joint));
   };
-  for (size_t s = 0; s < model_.joint_sets.size(); ++s) add(model_.joint_sets[s], "joint set " + std::to_string(s));
-  add(model_.default_joint, "the default joint");
+  for (const df::JointProperties& joint : model_.joint_sets) add(joint);
+  add(model_.default_joint);
 }
 
 // Contacts share blocks. add(range) runs for each of kParts fixed ranges of
@@ -288,6 +286,7 @@ void Simulation3::detect() {
     const int set = contact_joint_set(model_.blocks, c);
     c.joint = set >= 0 && set < sets ? set : sets;
   }
+  place_bonds();
 }
 
 bool Simulation3::iterate(double dt, std::vector<Vector12d>& d, int& iterations) {
@@ -476,7 +475,9 @@ void Simulation3::finish_step(const std::vector<Vector12d>& d, double dt) {
     in.slip_sign = slip_sign3(c);
     friction_[static_cast<size_t>(c.joint)]->advance(in, c.friction);
     if (c.state == ContactState3::Sliding) c.friction.slip += c.slip_velocity * dt;
+    c.bond_released = 0;  // booked by add_step_work
   }
+  bonds_placed_ = true;
 #pragma omp parallel for schedule(static) if (nb > df::parallel_grain())
   for (int b = 0; b < nb; ++b) {
     if (dof_[b] < 0) {  // a fixed block moves only with a moving foundation, rigidly

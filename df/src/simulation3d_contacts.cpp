@@ -12,6 +12,7 @@
 #include "dda/df/broad_phase3d.hpp"
 #include "dda/df/block_system.hpp"
 #include "dda/df/simulation3d.hpp"
+#include "bonds3d.hpp"
 #include "simulation3d_assembly.hpp"
 
 namespace dda::df3 {
@@ -90,6 +91,8 @@ void inherit(Contact3& c, const Contact3& o) {
   if (d2.norm() > 1e-12) c.slip_dir = d2.normalized();
   c.normal_force = o.normal_force;
   c.shear_force = o.shear_force;
+  c.bonded = o.bonded;
+  c.bond_area = o.bond_area;
 }
 
 // The candidates of one pair that stand for one point: closer than `merge`
@@ -308,6 +311,8 @@ df::FrictionInput friction_input3(const Contact3& c, double dt) {
   in.normal_force = c.normal_force;
   in.slip_velocity = c.slip_velocity;
   in.dt = dt;
+  in.contact_length = c.bond_area;  // in 3D an area: the law's cohesion c bond_area is a force
+  in.bonded = c.bonded;
   return in;
 }
 
@@ -346,7 +351,10 @@ ContactState3 update_contact3(Contact3& c, const Model3& m, const df::FrictionLa
   }
 
   const double n = -pn * dn;
-  if (n < -pn * eps && !hold) {  // tension beyond the band: the contact opens
+  // Tension beyond the band (and the bond's strength): the contact opens.
+  if (n < -(bond_tension3(c, m) + pn * eps) && !hold) {
+    // A bonded contact is locked (sliding broke the bond): its shear spring goes too.
+    if (c.bonded) break_bond_in_tension3(c, m, -ps * (shear_offset(c) + g.es * di + g.gs * dj));
     c.normal_force = 0;
     return ContactState3::Open;
   }
@@ -360,6 +368,12 @@ ContactState3 update_contact3(Contact3& c, const Model3& m, const df::FrictionLa
     const Eigen::Vector2d ds = shear_offset(c) + g.es * di + g.gs * dj;
     const Eigen::Vector2d fs = -ps * ds;
     if (fs.norm() > c.strength + ps * eps) {
+      if (c.bonded) {  // the bond goes; friction alone holds from here on
+        const double bonded_strength = c.strength;
+        c.bonded = false;
+        c.strength = law.strength(friction_input3(c, dt), c.friction);
+        c.bond_released = (bonded_strength * bonded_strength - c.strength * c.strength) / (2 * ps);
+      }
       c.slip_dir = ds.normalized();
       if (c.slip_axis.squaredNorm() == 0) c.slip_axis = tangents(g) * c.slip_dir;
       c.shear_force = -c.strength * c.slip_dir;

@@ -15,9 +15,11 @@
 //          changes of the contact's gap and slip that the ground's own
 //          increment makes.
 // losses   friction |S . slip| of every sliding contact; damping, the work
-//          of the viscous stress beta/dt V de^T D de (control.damping).
+//          of the viscous stress beta/dt V de^T D de (control.damping);
+//          breakage, the energy a joint's bond held in its springs when it
+//          broke (simulation3d_bonds.cpp).
 //
-// residual = input - (stored - stored at the start) - friction - damping:
+// residual = input - (stored - stored at the start) - friction - damping - breakage:
 // what the implicit step and the penalty springs dissipate, >= 0 but for
 // rounding, and exactly 0 for a block without contacts, whose kinetic
 // energy changes by the work done (constant acceleration in the step).
@@ -127,6 +129,7 @@ void Simulation3::add_step_work(const std::vector<Vector12d>& d, double dt) {
     e.load_work += 0.5 * p * (gap1.squaredNorm() - gap0.squaredNorm()) + p * gap1.dot(u);
   }
   for (const Contact3& c : contacts_) {
+    e.breakage += c.bond_released;  // a bond's springs at its break (simulation3d_bonds.cpp)
     if (c.state == ContactState3::Open) continue;
     if (c.state == ContactState3::Sliding) e.friction += std::abs(c.shear_force.dot(c.slip));
     // The ground moving a fixed block loads the contact's springs.

@@ -20,6 +20,7 @@ Simulation3State Simulation3::state() const {
   s.energy_log = energy_log_;
   s.solver_warm_start = solver_->warm_start();
   s.started = started_;
+  s.bonds_placed = bonds_placed_;
   return s;
 }
 
@@ -49,6 +50,7 @@ void Simulation3::restore(const Simulation3State& s) {
   histories_ = s.histories;
   solver_->set_warm_start(s.solver_warm_start);
   started_ = s.started;
+  bonds_placed_ = s.bonds_placed;
   // A checkpoint written before the 3D ledger has none: it counts from here.
   if (s.energy_log.empty()) {
     start_energy();

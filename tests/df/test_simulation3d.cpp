@@ -302,13 +302,6 @@ TEST(Simulation3, SlipWeakeningBlockFollowsItsEquationOfMotion) {
   EXPECT_EQ(r.unconverged, 0);
 }
 
-// Cohesion is not modelled in 3D yet: a joint with it is refused, not ignored.
-TEST(Simulation3, JointWithCohesionIsRefused) {
-  Model3 m;
-  m.default_joint.cohesion = 1e5;
-  EXPECT_THROW(Simulation3{m}, InputError);
-}
-
 }  // namespace
 }  // namespace dda::df3
 

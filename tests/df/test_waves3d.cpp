@@ -8,7 +8,7 @@
 // The models are vertical columns of square plates (wave_test_models3.hpp)
 // with nu = 0, so that a plate free at its sides carries a vertical (P) wave
 // at sqrt(E / rho) = the constrained-modulus speed the dashpots take: the
-// column is the 1D medium. 3D contacts carry no tension, so the column is
+// column is the 1D medium. Unbonded contacts carry no tension, so the column is
 // held together by two opposite point loads (on the lowest and the highest
 // plate), well above the waves' stresses; the run starts from their
 // equilibrium (the plates' initial stress, wave_test_models3.hpp).

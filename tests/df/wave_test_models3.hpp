@@ -3,8 +3,8 @@
 // (test_waves3d.cpp): plate k spans z in [k h, (k + 1) h] over a w x w
 // square, a viscous base through which an incident wave enters, optionally
 // dashpots on the top, and a measurement point at every plate's centroid.
-// No gravity. 3D contacts carry no tension and no shear without normal
-// force, so two opposite point loads, on the lowest and the highest plate's
+// No gravity. Unbonded 3D contacts carry no tension and no shear without
+// normal force, so two opposite point loads, on the lowest and the highest plate's
 // centroids, press the column together (`precompression` p over the
 // plates' area, well above the waves' stresses); the loads do no net work
 // over a wave that passes.

@@ -222,7 +222,7 @@ std::string energy_balance_line(const std::vector<df::EnergyRecord>& log, const 
   const double scale = df::energy_moved(log.front(), e);
   return "at t = " + num(e.time) + " s, work done " + joules(e.input()) + ", stored " +
          joules(e.stored() - log.front().stored()) + " more than at the start, losses " + joules(e.losses()) +
-         " (friction, damping, bolts, radiation), residual " + joules(e.residual) + " (" +
+         " (friction, damping, breakage, radiation), residual " + joules(e.residual) + " (" +
          percent(scale > 0 ? e.residual / scale : 0.0) +
          " of the energy moved; what the penalty springs and the implicit step dissipate, " + unit + ")";
 }

@@ -14,7 +14,7 @@
 // Losses that are accounted for: friction (sliding force times slip at every
 // sliding contact), damping (the kinetic energy a dynamic parameter k < 1
 // removes, (1 - k^2) of it, plus the work of the blocks' viscous damping,
-// beta/dt S de^T E de a step, control.damping), breakage (energy released by broken bolts) and
+// beta/dt S de^T E de a step, control.damping), breakage (energy released by broken bolts, and in 3D by broken joint bonds) and
 // radiation (what the viscous boundaries let out of the model; the work of
 // an incident wave's traction on them counts with the loads).
 // residual = input work - (stored - stored at the start) - friction -

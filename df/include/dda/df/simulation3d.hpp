@@ -13,9 +13,9 @@
 // interface: the law gives the strength from the normal force and the slip
 // speed of the current iterate, and advances its state once per step.
 //
-// Left out on purpose (so far): step control (dt is the caller's), cohesion
-// and tensile strength (a contact point stands for an area 3D does not
-// apportion yet), fixed and load points, outputs.
+// Bonds: a joint set's cohesion and tensile strength act on the contacts of
+// faces in touch at the start, each over its share of the face-to-face
+// patch (simulation3d_bonds.cpp); a bond broken stays broken.
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <memory>
@@ -88,8 +88,9 @@ struct Model3 {
   std::vector<Vector12d> initial_velocity;
   // Joint properties by the joint set of the faces in contact (PolyFace::set;
   // index = set id); faces of other sets (boundary, excavation, none given)
-  // use default_joint. Only the friction is read (law, angle, parameters);
-  // cohesion and tensile strength must be 0, the penalties are below.
+  // use default_joint. Read: the friction (law, angle, parameters) and the
+  // bond (cohesion, tensile_strength; Pa, over the contact's bond_area);
+  // the penalties are below.
   std::vector<df::JointProperties> joint_sets;
   df::JointProperties default_joint;
   double normal_penalty = 1e9;     // N/m, per contact point
@@ -115,6 +116,11 @@ struct Model3 {
   int max_iterations = 10;         // open-close iterations per step (then advance() cuts dt)
   Control3 control;
 
+  // The joint of a contact's `joint` index: joint set, or the default.
+  const df::JointProperties& joint(int index) const {
+    return static_cast<std::size_t>(index) < joint_sets.size() ? joint_sets[static_cast<std::size_t>(index)]
+                                                               : default_joint;
+  }
   const Material3& material_of(std::size_t b) const {
     return materials[block_material.empty() ? 0 : static_cast<std::size_t>(block_material[b])];
   }
@@ -141,6 +147,11 @@ struct Contact3 {
   Vec3 slip_axis{0, 0, 0};         // world direction of the first slip: the sign of later slip along it
                                    // is the 2D slip_sign the laws count reversals with (degradation)
   df::FrictionState friction;      // the law's memory, carried with the contact
+  // The joint's bond (simulation3d_bonds.cpp): cohesion c bond_area in shear
+  // and tension T bond_area while intact; it breaks once, for ever.
+  bool bonded = false;
+  double bond_area = 0;            // m^2, this contact's share of its face-to-face patch
+  double bond_released = 0;        // J, spring energy the bond let go in this step (the ledger's breakage)
 };
 
 // One accepted step.
@@ -219,6 +230,7 @@ struct Simulation3State {
   std::vector<df::EnergyRecord> energy_log;       // the ledger; empty in files written before it
   df::LinearSolver::WarmStart solver_warm_start;  // PCG's start vector (empty for CHOLMOD)
   bool started = false;                           // initial equilibrium done (or not asked for)
+  bool bonds_placed = false;                      // the joints' bonds are placed (simulation3d_bonds.cpp)
 };
 
 class ContactCoupling3;  // df/src/contact_coupling3.hpp
@@ -328,6 +340,10 @@ class Simulation3 {
   Vec3 incident_velocity(double dt) const;  // v_in's mean over the step (zero while settling)
   void add_viscous_terms(double dt, Assembly3& sys) const;
   void add_viscous_work(const std::vector<Vector12d>& d, double dt, df::EnergyRecord& e) const;
+  // Bonds (simulation3d_bonds.cpp): until the first accepted solve, every
+  // detection bonds the contacts of bonded joints in touch, each with its
+  // share of the patch, and closes them.
+  void place_bonds();
   // The energy ledger (simulation3d_energy.cpp): started afresh from the
   // current state; a step's work and losses, taken from the configuration
   // at its start with the forces as assembled (before finish_step moves the
@@ -385,6 +401,8 @@ class Simulation3 {
   std::vector<std::vector<int>> range_contacts_ = std::vector<std::vector<int>>(kRanges);
   df::StepTimings timings_;
   bool started_ = false;         // settle() has run (or was not asked for)
+  bool bonds_used_ = false;      // some joint has cohesion or tensile strength
+  bool bonds_placed_ = false;    // a solve was accepted: no new bonds from here on
   bool settling_ = false;        // before t = 0, relaxing statically: time stands still
   bool settling_stuck_ = false;  // and every closed contact sticks (its first phase)
   StartUp start_up_;
