@@ -20,15 +20,14 @@ namespace {
 // Sections that only one dimension reads. A section of the other dimension
 // would be silently ignored, so it is an error naming it (with the section
 // that does the job, where there is one). The forward run reads materials,
-// joints, loading, fixed, bolts and control in both (each dimension its own
-// keys); boundaries are 2D only so far; `output` serves `dda run` in both.
+// joints, loading, fixed, bolts, boundaries and control in both (each
+// dimension its own keys); `output` serves `dda run` in both.
 struct OtherDimension {
   const char* key;
   const char* instead;  // "" if none
 };
 const OtherDimension kOnly2d[] = {
-    {"joint_sets", "fracture_sets"}, {"lines", "planes"}, {"traces", "fracture_files"}, {"geometry", ""},
-    {"boundaries", ""}};
+    {"joint_sets", "fracture_sets"}, {"lines", "planes"}, {"traces", "fracture_files"}, {"geometry", ""}};
 const char* const kOnly3d[] = {"fracture_sets", "persistent_sets", "planes", "fracture_files", "trace_planes"};
 
 void check_dimension(const YamlNode& root) {

@@ -60,7 +60,8 @@ Vec3 GroundMotion3::mean_acceleration(double t0, double t1) const {
 std::shared_ptr<const GroundInputMode3> make_ground_input_mode3(const std::string& name) {
   if (name == "loading") return std::make_shared<LoadingMode3>();
   if (name == "displacement") return std::make_shared<DisplacementMode3>();
-  throw InputError("Earthquake mode '" + name + "': use loading or displacement.");
+  if (name == "incident") return std::make_shared<IncidentMode3>();
+  throw InputError("Earthquake mode '" + name + "': use loading, displacement or incident.");
 }
 
 }  // namespace dda::df3

@@ -70,7 +70,7 @@ GroundInput3 read_earthquake3(const YamlNode& n) {
   if (n.is_map() && n.has("foundation"))
     n.fail_key("foundation", "is a 2D key: in 3D the foundation is the fixed blocks (see fixed)");
   n.allow({"record", "units", "direction", "components", "scale", "resample", "filter", "ramp", "baseline", "mode"});
-  const std::string mode = n.choice("mode", {"loading", "displacement"}, "loading");
+  const std::string mode = n.choice("mode", {"loading", "displacement", "incident"}, "loading");
   // The baseline default is the 2D mode's of the same name (0 loading, 3 displacement).
   const df::RecordEntry r = df::read_record_entry(n, 3, df::make_ground_motion_mode(mode)->default_baseline());
   RecordReadOptions options;
@@ -149,11 +149,12 @@ Parsed3 parse(const YamlNode& root) {
   read_control3(root, p);
   p.water = df::read_water<3>(root);
   df::read_bolt_entries<Vec3>(root, read_vec3);  // checked here, placed in blocks by add_bolts3
+  read_viscous_sides3(root);  // boundaries (scenario3d_waves.cpp)
   return p;
 }
 
 bool has_any_df_section(const YamlNode& root) {
-  for (const char* k : {"materials", "joints", "loading", "fixed", "water", "bolts", "control"})
+  for (const char* k : {"materials", "joints", "loading", "fixed", "water", "bolts", "boundaries", "control"})
     if (root.has(k)) return true;
   return false;
 }
@@ -377,6 +378,7 @@ DfScenario3 read_df3_scenario(const YamlNode& root, const PolyhedronModel& block
   c.solver = p.solver;
   c.initial_equilibrium = p.initial_equilibrium;
   c.damping = p.damping;
+  add_viscous_boundary3(root, blocks, blocks_path, m);  // after the earthquake and dt
   m.max_iterations = p.max_open_close;
   m.normal_penalty = p.normal_penalty ? *p.normal_penalty : default_normal_penalty(m);
   m.shear_penalty = p.shear_penalty ? *p.shear_penalty : m.normal_penalty;

@@ -99,6 +99,7 @@ Simulation3::Simulation3(Model3 model)
   make_friction_laws();
   index_points();
   start_bolts();
+  check_viscous();
   start_energy();
   // w0: half the largest side of the model's bounding box (the 2D solver
   // takes half the height); it scales the displacement limit of a step.
@@ -209,6 +210,7 @@ void Simulation3::assemble(double dt) {
     }
   }
   add_bolt_terms(sys);
+  if (model_.viscous) add_viscous_terms(dt, sys);
   for_each_range(block_loads_, [this](Assembly3& range, const std::vector<int>& mine) {
     for (const int k : mine) {
       const Contact3& c = contacts_[static_cast<std::size_t>(k)];

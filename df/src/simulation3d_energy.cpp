@@ -144,6 +144,7 @@ void Simulation3::add_step_work(const std::vector<Vector12d>& d, double dt) {
       e.load_work -= c.normal_force * c.geo.gn.dot(d[c.j]) + c.shear_force.dot(c.geo.gs * d[c.j]);
   }
   if (!bolts_.empty()) e.load_work += bolt_ground_work(d);
+  if (model_.viscous) add_viscous_work(d, dt, e);  // radiation, and the incident wave's work with the loads
   energy_log_.push_back(e);
 }
 

@@ -5,6 +5,8 @@
 #include <cmath>
 
 #include "dda/df/block_system.hpp"
+#include "dda/df/lysmer_dashpot.hpp"
+#include "dda/df/time_step.hpp"
 
 namespace dda::df {
 namespace {
@@ -30,17 +32,13 @@ Edge edge_of(const Polygon2& v, int edge) {
 }  // namespace
 
 double p_wave_speed(const Material& m) {
-  const double nu = m.poisson;
-  const double modulus = m.plane == PlaneMode::Strain ? m.young * (1 - nu) / ((1 + nu) * (1 - 2 * nu))
-                                                      : m.young / (1 - nu * nu);
-  return std::sqrt(modulus / m.density);
+  return p_wave_speed(m.young, m.poisson, m.density, m.plane != PlaneMode::Strain);
 }
 
-double s_wave_speed(const Material& m) { return std::sqrt(m.young / (2 * (1 + m.poisson) * m.density)); }
+double s_wave_speed(const Material& m) { return shear_wave_speed(m.young, m.poisson, m.density); }
 
 Matrix2d dashpot_matrix(const Material& m, const Vec2& n) {
-  const Vec2 s(-n.y(), n.x());
-  return m.density * (p_wave_speed(m) * n * n.transpose() + s_wave_speed(m) * s * s.transpose());
+  return lysmer_dashpot<2>(m.density, p_wave_speed(m), s_wave_speed(m), n);
 }
 
 FreeField free_field(const TimeHistory& incident, const Material& m, double y, double y_base, double y_surface,

@@ -84,7 +84,7 @@ DlResult3 generate_3d_from_scenario(const YamlNode& root) {
   // the 2D-only sections more helpfully.
   root.allow({"name", "description", "seed", "dimension", "domain", "fracture_sets", "persistent_sets", "planes",
               "layering", "fracture_files", "excavations", "points", "trace_planes", "cutting", "output",
-              "materials", "joints", "loading", "fixed", "bolts", "control"});
+              "materials", "joints", "loading", "fixed", "water", "bolts", "boundaries", "control"});
   if (scenario_dimension(root) != 3)
     root.fail_key("dimension", "must be 3 for a 3D fracture network (add dimension: 3 at the top level)");
   detail::Builder3 b;

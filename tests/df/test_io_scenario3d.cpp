@@ -162,7 +162,7 @@ TEST(Scenario3d, EarthquakeInThreeComponents) {
   EXPECT_NE(a.x(), 0);
   EXPECT_NE(a.y(), 0);
   EXPECT_NE(a.z(), 0);
-  const std::string bad = replaced(kScenario, "  point_loads:", "  earthquake: {record: eq3.csv, units: m/s2, mode: incident}\n  point_loads:");
+  const std::string bad = replaced(kScenario, "  point_loads:", "  earthquake: {record: eq3.csv, units: m/s2, mode: shake}\n  point_loads:");
   try {
     read_df3_scenario(YamlNode::load_string(bad, dir + "/s.yaml"), testing::incline_blocks(points()), "b3.h5");
     FAIL();

@@ -70,7 +70,19 @@ class DisplacementMode3 final : public GroundInputMode3 {
   }
 };
 
-// "loading" or "displacement"; InputError otherwise.
+// Incident: the record is the outcrop motion; it enters as an incident wave
+// of half its velocity through the viscous boundary's input faces
+// (viscous_boundary3.hpp; the scenario reader fills
+// ViscousBoundary3::incident_velocity from the record). No body force, no
+// moving foundation.
+class IncidentMode3 final : public GroundInputMode3 {
+ public:
+  std::string name() const override { return "incident"; }
+  Vec3 body_acceleration(const GroundMotion3&, double, double) const override { return Vec3::Zero(); }
+  Vec3 foundation_increment(const GroundMotion3&, double, double) const override { return Vec3::Zero(); }
+};
+
+// "loading", "displacement" or "incident"; InputError otherwise.
 std::shared_ptr<const GroundInputMode3> make_ground_input_mode3(const std::string& name);
 
 // The earthquake of a 3D model: the motion and its mode.

@@ -37,6 +37,7 @@
 #include "dda/df/linear_solver.hpp"
 #include "dda/df/start_up.hpp"
 #include "dda/df/step_timings.hpp"
+#include "dda/df/viscous_boundary3.hpp"
 
 namespace dda::df3 {
 
@@ -100,6 +101,8 @@ struct Model3 {
   // joints, and no cost. Saturation per set: JointProperties::saturation.
   std::optional<df::WaterTable<3>> water;
   GroundInput3 earthquake;         // none while earthquake.motion is null; the fixed blocks are the foundation
+  // Non-reflecting boundary faces and the incident wave (viscous_boundary3.hpp); none: no cost.
+  std::optional<ViscousBoundary3> viscous;
   std::vector<FixedPoint3> fixed_points;  // on free blocks
   std::vector<PointLoad3> loads;          // on free blocks
   std::vector<MeasurementPoint3> measurements;
@@ -350,6 +353,13 @@ class Simulation3 {
   void advance_bolts(const std::vector<Vector12d>& d, const std::vector<Vec3>& old_centroid);
   double bolt_ground_work(const std::vector<Vector12d>& d) const;
   double stored_bolt_energy() const;
+  // The viscous boundary (simulation3d_waves.cpp): checked in the
+  // constructor; its dashpots and incident traction in K and F; their
+  // energy in the step's ledger record.
+  void check_viscous() const;
+  Vec3 incident_velocity(double dt) const;  // v_in's mean over the step (zero while settling)
+  void add_viscous_terms(double dt, Assembly3& sys) const;
+  void add_viscous_work(const std::vector<Vector12d>& d, double dt, df::EnergyRecord& e) const;
   // Bonds (simulation3d_bonds.cpp): until the first accepted solve, every
   // detection bonds the contacts of bonded joints in touch, each with its
   // share of the patch, and closes them.

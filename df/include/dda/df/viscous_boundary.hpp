@@ -15,7 +15,9 @@
 // (Joyner & Chen 1975). v_in is half the motion a free surface of the base
 // rock would have (the outcrop motion), since a free surface doubles it.
 //
-// Wave speeds of the block's material in the plane of the model:
+// The dashpot law is lysmer_dashpot.hpp's, shared with the 3D boundary
+// (viscous_boundary3.hpp). Wave speeds of the block's material in the
+// plane of the model:
 //   plane strain: Vp = sqrt(E (1 - nu) / ((1 + nu)(1 - 2 nu) rho)),
 //   plane stress: Vp = sqrt(E / ((1 - nu^2) rho)),
 //   both:         Vs = sqrt(E / (2 (1 + nu) rho)).
