@@ -10,6 +10,7 @@
 #include "dda/common/line_model.hpp"
 #include "dda/df/model.hpp"
 #include "df_test_models.hpp"
+#include "tapered_sine.hpp"
 
 namespace dda::df::test {
 
@@ -61,16 +62,10 @@ inline TimeHistory hann_shift(double amplitude, double tau, const Vec2& directio
 // ramped in and out over one cycle each with a Hann taper.
 inline TimeHistory tapered_sine(double amplitude, double omega, int cycles, const Vec2& direction) {
   TimeHistory h;
-  const double period = 2 * kPi / omega, total = cycles * period;
-  const int n = 80 * cycles;
-  for (int k = 0; k <= n; ++k) {
-    const double t = total * k / n;
-    double taper = 1;
-    if (t < period) taper = std::pow(std::sin(0.5 * kPi * t / period), 2);
-    if (t > total - period) taper = std::pow(std::sin(0.5 * kPi * (total - t) / period), 2);
+  dda::wave_test::tapered_sine_samples(amplitude, omega, cycles, [&](double t, double v) {
     h.t.push_back(t);
-    h.value.push_back(amplitude * taper * std::sin(omega * t) * direction);
-  }
+    h.value.push_back(v * direction);
+  });
   return h;
 }
 

@@ -32,6 +32,7 @@
 
 #include "dda/df/simulation3d.hpp"
 #include "df3_test_models.hpp"
+#include "tapered_sine.hpp"
 
 namespace dda::df3::testing {
 
@@ -71,16 +72,10 @@ inline History3 hann_pulse3(double amplitude, double tau) {
 // cycles, ramped in and out over one cycle each with a Hann taper, then rest.
 inline History3 tapered_sine3(double amplitude, double omega, int cycles) {
   History3 h;
-  const double period = 2 * M_PI / omega, total = cycles * period;
-  const int n = 80 * cycles;
-  for (int k = 0; k <= n; ++k) {
-    const double t = total * k / n;
-    double taper = 1;
-    if (t < period) taper = std::pow(std::sin(0.5 * M_PI * t / period), 2);
-    if (t > total - period) taper = std::pow(std::sin(0.5 * M_PI * (total - t) / period), 2);
+  dda::wave_test::tapered_sine_samples(amplitude, omega, cycles, [&](double t, double v) {
     h.t.push_back(t);
-    h.value.emplace_back(0, 0, amplitude * taper * std::sin(omega * t));
-  }
+    h.value.emplace_back(0, 0, v);
+  });
   return h;
 }
 
