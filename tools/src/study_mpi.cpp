@@ -34,6 +34,7 @@ bool built_with_mpi() { return false; }
 #endif
 
 int MpiWorld::threads_per_rank() const {
+  if (case_ranks_on_node_ > 0) return std::max(1, machine_cores() / case_ranks_on_node_);
   int local = 1;
   for (const char* var : {"OMPI_COMM_WORLD_LOCAL_SIZE", "SLURM_NTASKS_PER_NODE", "MPI_LOCALNRANKS"})
     if (const char* v = std::getenv(var)) {
@@ -82,6 +83,18 @@ MpiWorld::MpiWorld() {
   initialised_ = true;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
   MPI_Comm_size(MPI_COMM_WORLD, &size_);
+  // The ranks sharing this node's cores, less rank 0 if it is one of them
+  // (it hands out cases and waits without spinning): with mpirun -n 2 on a
+  // 2-core machine the one rank that runs cases gets both cores, as a
+  // direct run does.
+  MPI_Comm node = MPI_COMM_NULL;
+  MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, rank_, MPI_INFO_NULL, &node);
+  int on_node = 1, runners = 0;
+  MPI_Comm_size(node, &on_node);
+  const int runs_cases = rank_ == 0 && size_ > 1 ? 0 : 1;
+  MPI_Allreduce(&runs_cases, &runners, 1, MPI_INT, MPI_SUM, node);
+  MPI_Comm_free(&node);
+  case_ranks_on_node_ = std::max(1, runners);
 }
 
 MpiWorld::~MpiWorld() {

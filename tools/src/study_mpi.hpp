@@ -27,8 +27,10 @@ class MpiWorld {
   MpiWorld& operator=(const MpiWorld&) = delete;
   int rank() const { return rank_; }
   int size() const { return size_; }
-  // The cores of this node shared among the ranks on it (Open MPI's
-  // OMPI_COMM_WORLD_LOCAL_SIZE, Slurm's SLURM_NTASKS_PER_NODE), at least 1.
+  // The cores of this node shared among the ranks on it that run cases:
+  // rank 0 only hands them out, so on its node one rank fewer shares them
+  // (found by MPI when it runs; else from Open MPI's
+  // OMPI_COMM_WORLD_LOCAL_SIZE or Slurm's SLURM_NTASKS_PER_NODE). At least 1.
   int threads_per_rank() const;
   // Ends every rank with `status` (MPI_Abort): for an error on one rank
   // while the others may be waiting for it. Without MPI, exits this process.
@@ -38,6 +40,7 @@ class MpiWorld {
 
  private:
   int rank_ = 0, size_ = 1;
+  int case_ranks_on_node_ = 0;  // ranks of this node that run cases; 0: not known (no MPI)
   bool initialised_ = false;
 };
 
