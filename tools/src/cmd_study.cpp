@@ -208,12 +208,18 @@ void add_study_command(CLI::App& app, const GlobalOptions& global) {
     }
     const int failed = world.count_ranks(!error.empty());
     if (failed > 0) {
-      if (!error.empty() && world.rank() == 0) throw InputError(error);
-      if (!error.empty() && failed < world.size())
-        throw InputError("rank " + std::to_string(world.rank()) + ": " + error);
-      if (world.rank() == 0)
-        throw InputError(std::to_string(failed) + " of the " + std::to_string(world.size()) +
-                         " ranks could not read the study (their errors are above); rank 0 could.");
+      std::string says;
+      if (!error.empty() && world.rank() == 0)
+        says = error;
+      else if (!error.empty() && failed < world.size())
+        says = "rank " + std::to_string(world.rank()) + ": " + error;
+      else if (world.rank() == 0)
+        says = std::to_string(failed) + " of the " + std::to_string(world.size()) +
+               " ranks could not read the study (their errors are above); rank 0 could.";
+      if (!says.empty()) std::cerr << "dda: " << says << std::endl;
+      // mpirun ends the whole job at the first rank that exits non-zero:
+      // every rank says what it has to before any of them exits.
+      world.barrier();
       throw ReportedElsewhere{1};
     }
     if (world.size() == 1) return run_study(*opt, global, world, *prepared);

@@ -106,6 +106,10 @@ void MpiWorld::abort(int status) const {
   std::exit(status);
 }
 
+void MpiWorld::barrier() const {
+  if (initialised_) MPI_Barrier(MPI_COMM_WORLD);
+}
+
 int MpiWorld::count_ranks(bool mine) const {
   if (!initialised_) return mine ? 1 : 0;
   int in = mine ? 1 : 0, total = 0;
@@ -210,6 +214,8 @@ MpiWorld::~MpiWorld() = default;
 void MpiWorld::abort(int status) const { std::exit(status); }
 
 int MpiWorld::count_ranks(bool mine) const { return mine ? 1 : 0; }
+
+void MpiWorld::barrier() const {}
 
 std::vector<study::CaseRecord> run_pipeline_cases_mpi(const study::Study&, const std::vector<study::Case>&,
                                                       const fs::path&, const PoolOptions&, const MpiWorld&) {

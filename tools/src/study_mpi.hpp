@@ -37,6 +37,8 @@ class MpiWorld {
   [[noreturn]] void abort(int status) const;
   // How many ranks have `mine` true (every rank calls it: MPI_Allreduce).
   int count_ranks(bool mine) const;
+  // Waits until every rank has come here (MPI_Barrier).
+  void barrier() const;
 
  private:
   int rank_ = 0, size_ = 1;
