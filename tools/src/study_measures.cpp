@@ -114,26 +114,26 @@ void take_frames(const Frames& frames, const Blocks& blocks, RunMeasures& out) {
   }
 }
 
-RunMeasures read_run_measures(const std::string& path, const std::vector<study::MeasureSpec>& measures) {
+// The measures' values of a 2D or 3D results file, read as far as `parts`.
+template <class Results>
+void take_run(const Results& r, RunMeasures& out) {
+  take_points(r, out);
+  if (!r.energy.empty()) out.final_kinetic_energy = r.energy.back().kinetic;
+  take_frames(r.frames, r.blocks, out);
+}
+
+RunMeasures read_run_measures(const std::string& path, const df::ResultsParts& parts) {
   RunMeasures out;
-  if (h5_format_of(path) == df3::kResults3dFormat) {
-    const df3::Results3 r = df3::read_results3_h5(path, parts_for(measures));
-    take_points(r, out);
-    if (!r.energy.empty()) out.final_kinetic_energy = r.energy.back().kinetic;
-    take_frames(r.frames, r.blocks, out);
-  } else {
-    const df::Results r = df::read_results_h5(path, parts_for(measures));
-    take_points(r, out);
-    if (!r.energy.empty()) out.final_kinetic_energy = r.energy.back().kinetic;
-    take_frames(r.frames, r.blocks, out);
-  }
+  if (h5_format_of(path) == df3::kResults3dFormat)
+    take_run(df3::read_results3_h5(path, parts), out);
+  else
+    take_run(df::read_results_h5(path, parts), out);
   return out;
 }
 
-bool needs_results(const std::vector<study::MeasureSpec>& measures) {
-  for (const study::MeasureSpec& m : measures)
-    if (m.kind != "stats") return true;
-  return false;
+// Whether the measures read results.h5 at all (stats alone read stats.json).
+bool reads_results(const df::ResultsParts& p) {
+  return p.series || p.log || p.energy || p.bolts || p.frames || p.checkpoint;
 }
 
 }  // namespace
@@ -142,11 +142,12 @@ std::vector<double> pipeline_measures(const fs::path& case_dir, const std::vecto
   std::optional<nlohmann::json> stats;
   const std::string results_path = (case_dir / "results.h5").string();
   std::optional<RunMeasures> run;
-  if (needs_results(measures)) {
+  const df::ResultsParts parts = parts_for(measures);
+  if (reads_results(parts)) {
     if (!fs::exists(results_path))
       throw InputError(results_path + " is missing: the measures of the results need a forward run (a control section in "
                                       "the scenario).");
-    run = read_run_measures(results_path, measures);
+    run = read_run_measures(results_path, parts);
   }
   std::vector<double> out;
   for (const study::MeasureSpec& m : measures) {
