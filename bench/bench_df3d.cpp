@@ -16,11 +16,15 @@
 //
 // Each benchmark iteration is one Simulation3::step(dt) (default dt = 2 ms,
 // --dt S), the first from rest included; --steps N steps (default 6);
-// --solver auto|cholmod|pcg (default auto: Control3::solver).
+// --solver auto|cholmod|pcg (default auto: Control3::solver); --clusters 0|1
+// (default 1: Control3::contact_clusters); --equilibrium 0|1 (default 1:
+// Control3::initial_equilibrium); --iterations N (open-close iterations
+// allowed a step; default Model3's).
 // Counters: blocks, fixed, contacts and closed contacts after the last
-// step, ms_first (the first step: from rest, the first CHOLMOD analysis),
+// step, ms_start and start_solves (the start-up relaxation before t = 0:
+// its time and its global solves), ms_first (the first step),
 // ms_later (the mean of the others), solves per step (open-close
-// iterates), and the shares of the step spent in contact detection,
+// iterates; cluster solves per step), and the shares of the step spent in contact detection,
 // assembly and the linear solve (the rest: open-close updates and the
 // end-of-step block update), and PCG's mean iterations per solve and
 // its fallbacks to CHOLMOD. Assembly and solve come from
@@ -55,6 +59,9 @@ constexpr double kSmallest = 0.01;    // m^3: smaller blocks are left out
 int g_steps = 6;
 double g_dt = 2e-3;
 std::string g_solver = "auto";
+bool g_clusters = true;
+int g_iterations = 0;  // open-close iterations allowed a step; 0: Model3's default
+bool g_equilibrium = true;
 
 dda::FractureModel jointed_cube(double edge) {
   dda::FractureModel m;
@@ -88,6 +95,9 @@ Model3 cube_model(double edge) {
   }
   m.contact_reach = 0.02 * kSpacing;
   m.control.solver = g_solver;
+  m.control.contact_clusters = g_clusters;
+  m.control.initial_equilibrium = g_equilibrium;
+  if (g_iterations > 0) m.max_iterations = g_iterations;
   return m;
 }
 
@@ -98,6 +108,12 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 void BM_JointedCube(benchmark::State& state) {
   const Model3 model = cube_model(0.1 * static_cast<double>(state.range(0)));
   Simulation3 sim(model);
+  // The start-up relaxation (Control3::initial_equilibrium), timed and
+  // counted on its own.
+  const auto relax = std::chrono::steady_clock::now();
+  sim.start();
+  const double start_seconds = seconds_since(relax);
+  const long start_solves = sim.timings().solves, start_local = sim.timings().local_solves;
   double first = 0, later = 0, detection = 0, total = 0;
   long steps = 0, solves = 0;
   for (auto _ : state) {
@@ -130,6 +146,9 @@ void BM_JointedCube(benchmark::State& state) {
   state.counters["ms_first"] = 1e3 * first;
   state.counters["ms_later"] = steps > 1 ? 1e3 * later / static_cast<double>(steps - 1) : 0;
   state.counters["solves_per_step"] = static_cast<double>(solves) / n;
+  state.counters["cluster_solves_per_step"] = static_cast<double>(t.local_solves - start_local) / n;
+  state.counters["ms_start"] = 1e3 * start_seconds;
+  state.counters["start_solves"] = static_cast<double>(start_solves);
   state.counters["detect_pct"] = 100 * detection / total;
   state.counters["assembly_pct"] = 100 * t.assembly / total;
   state.counters["solve_pct"] = 100 * t.solve / total;
@@ -150,6 +169,12 @@ int main(int argc, char** argv) {
     const bool has_value = i + 1 < argc;
     if (std::strcmp(argv[i], "--steps") == 0 && has_value) {
       g_steps = std::max(1, std::atoi(argv[++i]));
+    } else if (std::strcmp(argv[i], "--iterations") == 0 && has_value) {
+      g_iterations = std::max(1, std::atoi(argv[++i]));
+    } else if (std::strcmp(argv[i], "--equilibrium") == 0 && has_value) {
+      g_equilibrium = std::atoi(argv[++i]) != 0;
+    } else if (std::strcmp(argv[i], "--clusters") == 0 && has_value) {
+      g_clusters = std::atoi(argv[++i]) != 0;
     } else if (std::strcmp(argv[i], "--solver") == 0 && has_value) {
       g_solver = argv[++i];
     } else if (std::strcmp(argv[i], "--dt") == 0 && has_value) {

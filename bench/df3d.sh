@@ -2,7 +2,8 @@
 # 3D forward-solver speed on a jointed cube (not part of CI): about 100,
 # 1k and 10k blocks cut by three persistent sets (bench/bench_df3d.cpp has
 # the model), STEPS steps from rest each (default 4; the first includes
-# CHOLMOD's analysis). Prints blocks, contacts, solves per step, ms per step
+# CHOLMOD's analysis). Prints blocks, contacts, the start-up relaxation's
+# global solves and time, solves and cluster solves per step, ms per step
 # (first step and the later ones), PCG iterations per solve, the shares of contact detection,
 # assembly and linear solve, and the growth exponent of the cost per step
 # between sizes.
@@ -25,13 +26,14 @@ json="${TMPDIR:-/tmp}/dda_bench_df3d.json"
 import json, math, sys
 runs = [b for b in json.load(open(sys.argv[1]))["benchmarks"] if "error_occurred" not in b]
 print(f"jointed cube, {sys.argv[2]} steps of dt = {sys.argv[3]} s from rest, {int(runs[0]['threads']) if runs else 0} threads")
-head = ("blocks", "contacts", "closed", "solves/step", "pcg_it", "ms_first", "ms_later", "ms/step", "detect%", "assembly%",
+head = ("blocks", "contacts", "closed", "start_solves", "ms_start", "solves/step", "cluster/step", "pcg_it", "ms_first", "ms_later", "ms/step", "detect%", "assembly%",
         "solve%")
 print(" ".join(f"{h:>11}" for h in head))
 prev = None
 for b in runs:
     n, ms = b["blocks"], b["real_time"]  # real_time: ms per benchmark iteration = per step
-    row = (int(n), int(b["contacts"]), int(b["closed"]), round(b["solves_per_step"], 1),
+    row = (int(n), int(b["contacts"]), int(b["closed"]), int(b.get("start_solves", 0)), round(b.get("ms_start", 0), 1), round(b["solves_per_step"], 1),
+           round(b.get("cluster_solves_per_step", 0), 1),
            round(b.get("pcg_iterations", 0), 1), round(b["ms_first"], 1),
            round(b["ms_later"], 1), round(ms, 1), round(b["detect_pct"], 1), round(b["assembly_pct"], 1),
            round(b["solve_pct"], 1))

@@ -98,6 +98,31 @@ class LowerBlockCsc {
     });
   }
 
+  // (K x) on block i alone: its diagonal block, the blocks below it in its
+  // block column (transposed) and the blocks left of it in its block row
+  // (stored in the columns of the blocks above it, found through the row
+  // index built with the pattern). For the solves on contact clusters
+  // (local_solve.hpp), which read a few rows of K.
+  Segment multiply_row(int i, const Eigen::VectorXd& x) const {
+    const double* values = matrix_->valuePtr();
+    const int* outer = matrix_->outerIndexPtr();
+    const Block d = diagonal(i).template selfadjointView<Eigen::Lower>();
+    Segment acc = d.lazyProduct(x.template segment<N>(N * i));
+    for (int k = below_start_[i]; k < below_start_[i + 1]; ++k) {
+      const auto xr = x.template segment<N>(N * below_row_[k]);
+      const int rank = k - below_start_[i];
+      for (int c = 0; c < N; ++c)
+        acc[c] += Eigen::Map<const Segment>(values + outer[N * i + c] + (N - c) + N * rank).dot(xr);
+    }
+    for (int k = left_start_[i]; k < left_start_[i + 1]; ++k) {
+      const int j = left_column_[k], rank = left_rank_[k];
+      const auto xj = x.template segment<N>(N * j);
+      for (int c = 0; c < N; ++c)
+        acc.noalias() += xj[c] * Eigen::Map<const Segment>(values + outer[N * j + c] + (N - c) + N * rank);
+    }
+    return acc;
+  }
+
   // y = D x, D the block diagonal (symmetric_diagonal: as in multiply).
   void multiply_diagonal(const Eigen::VectorXd& x, Eigen::VectorXd& y, const Block* symmetric_diagonal) const {
     const int nb = blocks_;
@@ -178,6 +203,22 @@ class LowerBlockCsc {
       for (int k = 0; k < neighbours; ++k) below_row_.push_back(inner[first + N + N * k] / N);
       below_start_.push_back(static_cast<int>(below_row_.size()));
     }
+    // The row index: for each block row, the block columns left of the
+    // diagonal that store a block of it, and that block's rank there.
+    left_start_.assign(static_cast<std::size_t>(nb) + 1, 0);
+    for (const int r : below_row_) ++left_start_[r + 1];
+    for (int b = 0; b < nb; ++b) left_start_[b + 1] += left_start_[b];
+    left_column_.resize(below_row_.size());
+    left_rank_.resize(below_row_.size());
+    {
+      std::vector<int> at(left_start_.begin(), left_start_.end() - 1);
+      for (int b = 0; b < nb; ++b)
+        for (int k = below_start_[b]; k < below_start_[b + 1]; ++k) {
+          const int slot = at[below_row_[k]]++;
+          left_column_[slot] = b;
+          left_rank_[slot] = k - below_start_[b];
+        }
+    }
     // Parts of about equal stored blocks (the diagonal ones counted too).
     part_start_.assign(1, 0);
     const double per_part = static_cast<double>(nb + below_row_.size()) / kParts;
@@ -201,6 +242,7 @@ class LowerBlockCsc {
   Eigen::Index nonzeros_ = 0;
   std::vector<int> outer_;
   std::vector<int> below_start_{0}, below_row_;         // per block column: coupled blocks below
+  std::vector<int> left_start_{0}, left_column_, left_rank_;  // per block row: coupled blocks left of it
   std::vector<char> nonzero_;                            // per coupled block: not all zero (find_nonzero_blocks)
   std::vector<int> part_start_;                          // kParts + 1 block columns
   mutable Eigen::MatrixXd partial_;                      // y of each part

@@ -43,6 +43,7 @@ struct Parsed3 {
   int max_open_close = 10;
   std::string solver = "auto";
   bool initial_equilibrium = Control3{}.initial_equilibrium;
+  bool contact_clusters = Control3{}.contact_clusters;
   df::ViscousDamping damping;
   std::optional<double> normal_penalty, shear_penalty, contact_reach;
   std::optional<df::WaterTable<3>> water;
@@ -123,7 +124,7 @@ void read_loading3(const YamlNode& root, Parsed3& p) {
 void read_control3(const YamlNode& root, Parsed3& p) {
   const YamlNode c = root.child("control");
   std::vector<std::string> keys{"max_open_close", "normal_penalty", "shear_penalty", "contact_reach", "solver",
-                                "initial_equilibrium", "damping"};
+                                "initial_equilibrium", "contact_clusters", "damping"};
   keys.insert(keys.end(), std::begin(df::kRunLengthKeys), std::end(df::kRunLengthKeys));
   c.allow(keys);
   const Control3 defaults3;
@@ -137,6 +138,7 @@ void read_control3(const YamlNode& root, Parsed3& p) {
   if (c.has("contact_reach")) p.contact_reach = c.number("contact_reach", Range::positive());
   p.solver = c.choice("solver", {"auto", "cholmod", "pcg"}, "auto");
   p.initial_equilibrium = c.flag("initial_equilibrium", Control3{}.initial_equilibrium);
+  p.contact_clusters = c.flag("contact_clusters", Control3{}.contact_clusters);
   p.damping = df::read_damping(c);
 }
 
@@ -377,6 +379,7 @@ DfScenario3 read_df3_scenario(const YamlNode& root, const PolyhedronModel& block
   c.min_dt_ratio = p.run.min_dt_ratio;
   c.solver = p.solver;
   c.initial_equilibrium = p.initial_equilibrium;
+  c.contact_clusters = p.contact_clusters;
   c.damping = p.damping;
   add_viscous_boundary3(root, blocks, blocks_path, m);  // after the earthquake and dt
   m.max_iterations = p.max_open_close;

@@ -307,6 +307,7 @@ bool Simulation3::iterate(double dt, std::vector<Vector12d>& d, int& iterations)
   // were assembled in: the next iterate swaps only their springs.
   std::vector<std::pair<int, ContactState3>> changed;
   std::vector<ContactState3> before(contacts_.size());
+  std::vector<std::uint8_t> unsettled(contacts_.size(), 0);  // per contact, by the last global update (the clusters' seeds)
   // The start-up relaxation has no shorter step to fall back on, so it may
   // iterate longer than a step (start_up.hpp).
   const int limit = settling_ ? std::max(df::kSettleOpenClose, model_.max_iterations) : model_.max_iterations;
@@ -330,6 +331,7 @@ bool Simulation3::iterate(double dt, std::vector<Vector12d>& d, int& iterations)
       const ContactState3 s =
           update_contact3(c, model_, law_of(c), dt, d[c.i], d[c.j], changes[k] >= 2, friction_settled);
       settled = settled && friction_settled && s == c.state;
+      unsettled[static_cast<std::size_t>(k)] = !friction_settled || s != c.state;
       if (s != c.state) ++changes[k];
       c.state = s;
     }
@@ -339,6 +341,8 @@ bool Simulation3::iterate(double dt, std::vector<Vector12d>& d, int& iterations)
     if (settled) {
       if (!was_trial) return true;
       trial = false;
+    } else if (model_.control.contact_clusters && iterations < limit && settle_clusters(dt, d, changes, changed, unsettled)) {
+      trial = false;  // the next global solve checks the clusters' states, at full accuracy
     }
   }
   return false;  // d is from states one update behind the stored ones

@@ -18,6 +18,7 @@
 // patch (simulation3d_bonds.cpp); a bond broken stays broken.
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -64,6 +65,11 @@ struct Control3 {
   // its friction limit 0.14 mm (tests/df/test_simulation3d.cpp,
   // CubeHoldsAtItsFrictionLimit). On by default, as in 2D.
   bool initial_equilibrium = true;
+  // Settle the contact states a solve changed on the blocks around them
+  // before the whole model is solved again (contact_clusters.hpp, shared
+  // with 2D's Control::contact_clusters); false: every iterate solves the
+  // whole model.
+  bool contact_clusters = true;
 };
 
 // Size from which the 3D "auto" solver uses PCG, in free blocks. Measured on
@@ -308,6 +314,17 @@ class Simulation3 {
   void prepare_input(double dt);     // body acceleration, foundation motion, sliding strengths
   // Open-close iteration of one attempt; true if the states settled.
   bool iterate(double dt, std::vector<Vector12d>& d, int& iterations);
+  // Contact clusters (simulation3d_clusters.cpp, the driver in
+  // contact_clusters.hpp): after a global update that changed some
+  // contacts, their states settled on the blocks around them, the rest held.
+  // True when they settled (the caller verifies with a full global solve).
+  // d is corrected on the cluster; `changed` holds the changes the next
+  // solve must swap in, `changes` counts each contact's state changes.
+  // `unsettled`: per contact, the global update changed its state or left
+  // its friction lagging (the clusters' seeds).
+  bool settle_clusters(double dt, std::vector<Vector12d>& d, std::vector<int>& changes,
+                       std::vector<std::pair<int, ContactState3>>& changed,
+                       const std::vector<std::uint8_t>& unsettled);
   double max_vertex_displacement(const std::vector<Vector12d>& d) const;
   // Accepts the step: `moved` is max_vertex_displacement(d), already known.
   StepInfo3 record(double dt, const std::vector<Vector12d>& d, double moved, int iterations, bool converged,
