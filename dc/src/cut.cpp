@@ -94,6 +94,7 @@ CutResult cut_blocks(const LineModel& lines, const CutOptions& options) {
   m.sets = lines.sets;
   m.layers = lines.layers;
   m.bedding_dip_deg = lines.bedding_dip_deg;
+  m.origin = lines.origin;
   m.provenance = lines.provenance;
   m.domain_area = in.has_domain ? std::abs(signed_area(lines.domain)) : ar.domain_area;
   m.excavated_area = ar.excavated_area;
