@@ -167,7 +167,7 @@ TEST(CoordinateRange, OnlyNonFiniteAndAstronomicalCoordinatesAreRefused) {
   EXPECT_EQ(input_error_of([] { check_coordinate_range(square(0, 0, 1e300), "huge.yaml"); }),
             "huge.yaml: has coordinates up to 1e+300 m, beyond the 1e+15 m any model may reach (coordinates are "
             "metres; doubles there are more than 0.1 m apart).");
-  EXPECT_EQ(input_error_of([] { check_coordinate_range({Vec2(0, 0), Vec2(std::nan(""), 1)}, "nan.yaml"); }),
+  EXPECT_EQ(input_error_of([] { check_coordinate_range(std::vector<Vec2>{Vec2(0, 0), Vec2(std::nan(""), 1)}, "nan.yaml"); }),
             "nan.yaml: has a coordinate that is not a finite number.");
   EXPECT_THROW(check_coordinate_range(std::vector<Vec3>{Vec3(0, 0, 0), Vec3(0, 2e15, 1)}, "f.yaml"), InputError);
 }
