@@ -418,6 +418,32 @@ YAML
   [ -z "$(origin_of near/results.h5)" ] || fail "the near model was moved"
   same_run_about_origin slider xy "$origin"
   slider_starts_where_put far.yaml xy
+  # A DDA-for-Windows model (.geo and .ana, no domain: the origin comes
+  # from all of it) moved to (5e9, 3e9): x in [5e9, 5e9 + 4] about 5e9 + 2
+  # rounded to a multiple of 4, y in [3e9, 3e9 + 2] about 3e9 + 1 rounded
+  # to a multiple of 2; run again at its local coordinates.
+  mkdir -p geo && cd geo || fail "geo folder"
+  moved_geo() {  # moved_geo OX OY: df_pushblock.geo moved by (5e9, 3e9), written about (OX, OY)
+    /usr/bin/python3 - "$@" "$SRC/tests/data/df_pushblock.geo" <<'PY'
+import re, sys
+o = [float(sys.argv[1]), float(sys.argv[2])]
+s = (5e9, 3e9)
+def moved(m):
+    v = m.group(2).split()
+    return m.group(1) + " " + " ".join(repr((float(x) + s[i % 2]) - o[i % 2]) for i, x in enumerate(v)) + " " + m.group(3)
+print(re.sub(r'(<(?:Joint type="[0-9]+"|Point)>)([^<]*)(</)', moved, open(sys.argv[3]).read()), end="")
+PY
+  }
+  cp "$SRC/tests/data/df_pushblock.ana" . && mkdir -p far near || fail "copy the .ana"
+  moved_geo 0 0 > far.geo
+  "$DDA" dl far.geo -o far/l.h5 -q && "$DDA" dc far/l.h5 -o far/b.h5 -q &&
+    "$DDA" df df_pushblock.ana --blocks far/b.h5 -o far/results.h5 --vtk far/vtk -q || fail "far .geo"
+  origin="$(origin_of far/results.h5)"
+  [ "$origin" = "5000000004 3000000002" ] || fail ".geo origin '$origin'"
+  moved_geo $origin > near.geo
+  "$DDA" dl near.geo -o near/l.h5 -q && "$DDA" dc near/l.h5 -o near/b.h5 -q &&
+    "$DDA" df df_pushblock.ana --blocks near/b.h5 -o near/results.h5 --vtk near/vtk -q || fail "near .geo"
+  same_run_about_origin measured_1 xy "$origin"
 }
 
 case_local_origin_3d() {
