@@ -389,21 +389,26 @@ PY
 
 case_local_origin_2d() {
   # The issue's 10 m box at x, y = 1e12 (said to have "no area", then
-  # refused): its lines and blocks are about the origin 1e12 + 8 (the centre
-  # rounded to a multiple of 8, coordinate_range.hpp) and it keeps its
-  # 100 m^2 to the last bit: its corners less the origin are exact.
+  # refused), with a line and a trace across it: its lines and blocks are
+  # about the origin 1e12 + 8 (the centre rounded to a multiple of 8,
+  # coordinate_range.hpp), it is cut into four blocks and keeps its 100 m^2
+  # to the last bit: its corners less the origin are exact.
   cat > box.yaml <<'YAML'
 name: box
 domain: {polygon: [[1e12, 1e12], [1000000000010, 1e12], [1000000000010, 1000000000010], [1e12, 1000000000010]]}
 lines:
   - {from: [1e12, 1000000000005], to: [1000000000010, 1000000000005]}
+traces:
+  - {file: t.csv}
 YAML
+  # and a mapped trace (CSV) across it, from below the box to above it (clipped there).
+  printf 'x1,y1,x2,y2,set\n1000000000004,999999999999,1000000000004,1000000000011,mapped\n' > t.csv
   "$DDA" dl box.yaml -o l.h5 -q && "$DDA" dc l.h5 -o b.h5 -q || fail "dl, dc of the box at 1e12"
   [ "$(origin_of l.h5)" = "1000000000008 1000000000008" ] || fail "lines origin '$(origin_of l.h5)'"
   [ "$(origin_of b.h5)" = "1000000000008 1000000000008" ] || fail "blocks origin '$(origin_of b.h5)'"
   "$DDA" stats b.h5 --json > s.json || fail "stats"
-  /usr/bin/python3 -c "import json; s = json.load(open('s.json')); assert s['blocks'] == 2 and s['total_area'] == 100, s" \
-    || fail "the box is not two blocks of 100 m^2 in all: $(cat s.json)"
+  /usr/bin/python3 -c "import json; s = json.load(open('s.json')); assert s['blocks'] == 4 and s['total_area'] == 100, s" \
+    || fail "the box is not four blocks of 100 m^2 in all: $(cat s.json)"
   # The incline at (1e12, 1e12) against the same model at its local
   # coordinates near the origin: the same cut and run, bit for bit (the
   # local geometry is the same doubles), with the far positions the near
