@@ -409,6 +409,8 @@ YAML
   "$DDA" stats b.h5 --json > s.json || fail "stats"
   /usr/bin/python3 -c "import json; s = json.load(open('s.json')); assert s['blocks'] == 4 and s['total_area'] == 100, s" \
     || fail "the box is not four blocks of 100 m^2 in all: $(cat s.json)"
+  # Its map is drawn about the origin, the ticks labelled in the user's coordinates.
+  "$DDA" plot b.h5 -o b.svg -q && grep -q 1000000000004 b.svg || fail "plot of the box at 1e12"
   # The incline at (1e12, 1e12) against the same model at its local
   # coordinates near the origin: the same cut and run, bit for bit (the
   # local geometry is the same doubles), with the far positions the near
