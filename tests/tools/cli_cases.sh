@@ -290,6 +290,12 @@ YAML
     "$DDA" dc li.h5 -o b.h5 -q
   expect_error 1 "^dda: inside\.yaml: the measurement point 'crown' at \(10, 4\) lies in no block" -- \
     "$DDA" run inside.yaml -o run -q
+  # The same model at 1e12 is cut about a local origin, and the sentence
+  # gives the point where the user put it.
+  sed -e 's/box: \[0, 0, 20, 10\]/box: [1e12, 1e12, 1000000000020, 1000000000010]/' \
+      -e 's/\[10, 4\]/[1000000000010, 1000000000004]/' inside.yaml > far.yaml
+  expect_error 1 "^dda: far\.yaml: the measurement point 'crown' at \(1000000000010, 1000000000004\) lies in no block" -- \
+    "$DDA" run far.yaml -o far -q
 }
 
 # ------------------------------------------------------ local origins
