@@ -10,6 +10,7 @@
 #include "dda/common/atomic_file.hpp"
 #include "dda/common/error.hpp"
 #include "dda/common/h5_util.hpp"
+#include "dda/common/origin_h5.hpp"
 #include "model_io_detail.hpp"
 
 namespace dda {
@@ -155,6 +156,7 @@ void write_lines_h5(const std::string& path, const LineModel& model) {
     h5::Writer w(path, out.temp_path());
     write_root_attributes(w, kLinesFormat, kUnits, model.provenance);
     w.attr_f64(w.file(), "bedding_dip_deg", model.bedding_dip_deg);
+    io::write_origin(w, w.file(), model.origin);
     {
       h5::Id g = w.group("domain");
       w.f64(g.get(), "vertices", flatten(model.domain), {model.domain.size(), 2}, "m",
@@ -205,6 +207,7 @@ LineModel read_lines_h5(const std::string& path) {
   LineModel m;
   m.provenance = read_provenance(r);
   m.bedding_dip_deg = root_number(r, "bedding_dip_deg");
+  m.origin = io::read_origin2(r, r.file());
   m.sets = read_sets(r);
   m.points = read_points(r);
   m.layers = read_layers(r);
@@ -246,6 +249,7 @@ void write_blocks_h5(const std::string& path, const BlockModel& model) {
     h5::Writer w(path, out.temp_path());
     write_root_attributes(w, kBlocksFormat, kUnits, model.provenance);
     w.attr_f64(w.file(), "bedding_dip_deg", model.bedding_dip_deg);
+    io::write_origin(w, w.file(), model.origin);
     w.attr_f64(w.file(), "domain_area", model.domain_area);
     w.attr_f64(w.file(), "excavated_area", model.excavated_area);
     {
@@ -306,6 +310,7 @@ BlockModel read_blocks_h5(const std::string& path) {
   BlockModel m;
   m.provenance = read_provenance(r);
   m.bedding_dip_deg = root_number(r, "bedding_dip_deg");
+  m.origin = io::read_origin2(r, r.file());
   m.domain_area = root_number(r, "domain_area");
   m.excavated_area = root_number(r, "excavated_area");
   m.sets = read_sets(r);

@@ -6,6 +6,7 @@
 #include "dda/common/atomic_file.hpp"
 #include "dda/common/error.hpp"
 #include "dda/common/model_io3.hpp"
+#include "dda/common/origin_h5.hpp"
 #include "model_io_detail.hpp"
 
 namespace dda {
@@ -239,6 +240,7 @@ void write_fractures_h5(const std::string& path, const FractureModel& model) {
   {
     h5::Writer w(path, out.temp_path());
     io::write_root_attributes(w, kFracturesFormat, io::kUnits3d, model.provenance);
+    io::write_origin(w, w.file(), model.origin);
     io::write_domain(w, model.domain);
     write_domain_surface(w, model.domain_surface);
     write_excavations(w, model.excavations);
@@ -256,6 +258,7 @@ FractureModel read_fractures_h5(const std::string& path) {
   io::check_format(r, kFracturesFormat);
   FractureModel m;
   m.provenance = io::read_provenance(r);
+  m.origin = io::read_origin3(r, r.file());
   m.domain = io::read_domain(r);
   m.domain_surface = read_domain_surface(r);
   m.sets = io::read_sets(r);

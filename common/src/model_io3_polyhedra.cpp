@@ -10,6 +10,7 @@
 #include <limits>
 
 #include "dda/common/atomic_file.hpp"
+#include "dda/common/origin_h5.hpp"
 #include "dda/common/model_io3.hpp"
 #include "dda/common/model_io3_h5.hpp"
 #include "model_io_detail.hpp"
@@ -183,6 +184,7 @@ void write_content(h5::Writer& w, const PolyhedronModel& model, const std::strin
   w.attr_f64(attrs, "domain_volume", model.domain_volume);
   w.attr_f64(attrs, "excavated_volume", model.excavated_volume);
   w.attr_i32(attrs, "unfinished_cuts", model.unfinished_cuts);
+  io::write_origin(w, attrs, model.origin);
   io::write_domain(w, model.domain, at);
   write_blocks(w, model.blocks, at);
   write_bodies(w, model.bodies, at);
@@ -202,6 +204,7 @@ PolyhedronModel read_content(const h5::Reader& r, const std::string& at, hid_t a
   };
   m.domain_volume = number("domain_volume");
   m.excavated_volume = number("excavated_volume");
+  m.origin = io::read_origin3(r, attrs, where);
   const auto unfinished = r.attr_int(attrs, "unfinished_cuts", where).value_or(0);
   if (unfinished < 0 || unfinished > kIntMax)
     r.fail("attribute unfinished_cuts is " + std::to_string(unfinished) + ", must be 0 or more");

@@ -44,7 +44,7 @@ void put(std::string& out, double v) {
 }  // namespace
 
 void write_lines_vtu(const std::string& path, const LineModel& model) {
-  VtuGrid g;
+  VtuGrid g(model.origin);
   std::vector<std::int32_t> set, kind, layer;
   for (const JointLine& l : model.lines) {
     g.add_point(l.a);
@@ -77,7 +77,7 @@ void write_lines_vtu(const std::string& path, const LineModel& model) {
 }
 
 void write_blocks_vtu(const std::string& path, const BlockModel& model) {
-  VtuGrid g;
+  VtuGrid g(model.origin);
   std::vector<std::int64_t> id;
   std::vector<double> area;
   std::vector<std::int32_t> layer;

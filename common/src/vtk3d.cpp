@@ -84,7 +84,7 @@ Polygon3 outline(const Fracture3& f, const Box3& domain) {
 }  // namespace
 
 void write_fractures_vtu(const std::string& path, const FractureModel& model) {
-  VtuGrid g;
+  VtuGrid g(model.origin);
   std::vector<std::int32_t> set, kind, shape, layer;
   std::vector<std::int64_t> id;
   for (std::size_t i = 0; i < model.fractures.size(); ++i) {
@@ -125,7 +125,7 @@ void write_fractures_vtu(const std::string& path, const FractureModel& model) {
 }
 
 void write_polyhedra_vtu(const std::string& path, const PolyhedronModel& model) {
-  VtuGrid g;
+  VtuGrid g(model.origin);
   std::vector<std::int64_t> id;
   std::vector<std::int32_t> body, layer, removability;
   std::vector<double> volume;

@@ -6,6 +6,7 @@
 #include <type_traits>
 
 #include "dda/common/atomic_file.hpp"
+#include "dda/common/coordinate_range.hpp"
 #include "dda/common/error.hpp"
 
 namespace dda {
@@ -71,9 +72,10 @@ void data_section(std::string& out, const char* tag, const ArrayList& arrays) {
 }  // namespace
 
 void VtuGrid::add_point(const Vec3& p) {
-  points_.push_back(p.x());
-  points_.push_back(p.y());
-  points_.push_back(p.z());
+  const Vec3 q = user_position(p, origin_);
+  points_.push_back(q.x());
+  points_.push_back(q.y());
+  points_.push_back(q.z());
 }
 
 void VtuGrid::add_cell(std::size_t n, int vtk_type) {

@@ -22,16 +22,19 @@
 #include <thread>
 
 #include "cut_internal.hpp"
+#include "dda/common/coordinate_range.hpp"
 #include "dda/common/error.hpp"
 #include "dda/dc/cut.hpp"
 
 namespace dda::dc {
 
 namespace {
-std::string describe(const ModelPoint& p) {
+// The point as the user gave it: its position about the model's local origin, plus the origin.
+std::string describe(const ModelPoint& p, const Vec2& origin) {
+  const Vec2 at = user_position(p.p, origin);
   std::ostringstream s;
-  s.precision(10);
-  s << to_string(p.kind) << " point '" << p.name << "' at (" << p.p.x() << ", " << p.p.y() << ")";
+  s.precision(origin == Vec2::Zero() ? 10 : 15);
+  s << to_string(p.kind) << " point '" << p.name << "' at (" << at.x() << ", " << at.y() << ")";
   return s.str();
 }
 }  // namespace
@@ -43,7 +46,7 @@ CutResult cut_blocks(const LineModel& lines, const CutOptions& options) {
 
   for (const ModelPoint& p : lines.points)
     if (!std::isfinite(p.p.x()) || !std::isfinite(p.p.y()))
-      throw InputError("The " + describe(p) + " has a coordinate that is not a finite number.");
+      throw InputError("The " + describe(p, lines.origin) + " has a coordinate that is not a finite number.");
 
   detail::PreparedInput in = detail::prepare_segments(lines, options);
   const double t_prepare = secs(t_start);
@@ -67,7 +70,7 @@ CutResult cut_blocks(const LineModel& lines, const CutOptions& options) {
   detail::ArrangementResult ar = detail::cut_arrangement(in, holes, locate, options.sliver, hole_where);
   for (std::size_t k = 0; k < holes.size(); ++k)
     if (hole_where[k] == 2)
-      throw InputError("The " + describe(lines.points[hole_index[k]]) + " lies outside the domain.");
+      throw InputError("The " + describe(lines.points[hole_index[k]], lines.origin) + " lies outside the domain.");
 
   // Free the arrangement on another thread while the blocks are built (it
   // shares nothing with them).
@@ -94,6 +97,7 @@ CutResult cut_blocks(const LineModel& lines, const CutOptions& options) {
   m.sets = lines.sets;
   m.layers = lines.layers;
   m.bedding_dip_deg = lines.bedding_dip_deg;
+  m.origin = lines.origin;
   m.provenance = lines.provenance;
   m.domain_area = in.has_domain ? std::abs(signed_area(lines.domain)) : ar.domain_area;
   m.excavated_area = ar.excavated_area;
@@ -108,7 +112,7 @@ CutResult cut_blocks(const LineModel& lines, const CutOptions& options) {
                         : w == 1                  ? "it is inside an excavation"
                         : w == 3                  ? "it is in a block removed by a hole point"
                                                   : "it is outside the domain";
-      throw InputError("The " + describe(p) + " lies in no block: " + why + ".");
+      throw InputError("The " + describe(p, lines.origin) + " lies in no block: " + why + ".");
     }
     m.points.push_back({p, block});
   }

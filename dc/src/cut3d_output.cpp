@@ -133,6 +133,7 @@ void build_output(Work& w, const FractureModel& in, const Cut3dOptions& options,
   out.domain = in.domain;
   out.domain_volume = in.domain_surface ? std::abs(enclosed_volume(*in.domain_surface)) : in.domain.volume();
   out.excavated_volume = w.excavated_volume + hole_volume;
+  out.origin = in.origin;
   out.provenance = in.provenance;
 }
 

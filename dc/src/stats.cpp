@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "dda/common/coordinate_range.hpp"
 #include "dda/common/geometry.hpp"
 #include "distribution.hpp"
 
@@ -87,11 +88,12 @@ nlohmann::json block_statistics(const BlockModel& model, int bins) {
     sum_a[static_cast<std::size_t>(l)] += area[k];
   }
   json layers = json::array();
+  const double level0 = level_along_beds(model.origin, model.bedding_dip_deg);  // the user's levels
   for (std::size_t i = 0; i < nl; ++i) {
     const Layer& l = model.layers[i];
     json e{{"layer", i},
-           {"bottom", l.bottom},
-           {"top", l.top},
+           {"bottom", user_level(l.bottom, level0)},
+           {"top", user_level(l.top, level0)},
            {"thickness", l.thickness()},
            {"blocks", count[i]}};
     const double c = static_cast<double>(count[i]);

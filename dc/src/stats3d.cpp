@@ -8,6 +8,7 @@
 #include <cmath>
 #include <map>
 
+#include "dda/common/coordinate_range.hpp"
 #include "dda/common/geometry.hpp"
 #include "distribution.hpp"
 
@@ -90,10 +91,11 @@ nlohmann::json block_statistics_3d(const PolyhedronModel& model, int bins) {
   j["removability"] = modes;
   j["removable_volume"] = removable_volume;
   json layers = json::array();
+  const double level0 = model.bed_normal.dot(model.origin);  // the user's levels
   for (std::size_t l = 0; l < model.layers.size(); ++l)
     layers.push_back({{"layer", l},
-                      {"bottom", model.layers[l].bottom},
-                      {"top", model.layers[l].top},
+                      {"bottom", user_level(model.layers[l].bottom, level0)},
+                      {"top", user_level(model.layers[l].top, level0)},
                       {"bodies", layer_bodies[l]},
                       {"mean_volume", layer_bodies[l] ? json(layer_volume[l] / layer_bodies[l]) : json(nullptr)}});
   j["per_layer"] = layers;

@@ -172,6 +172,7 @@ Model build_model(ModelInput in) {
 
   require(!in.materials.empty(), "The model has no material.");
   for (std::size_t i = 0; i < in.materials.size(); ++i) check_material(in.materials[i], i);
+  m.origin = in.geometry.origin;
   m.materials = in.materials;
   if (in.block_material.empty()) in.block_material.assign(nb, 0);
   require(in.block_material.size() == nb, "The block material list has " + std::to_string(in.block_material.size()) +

@@ -9,6 +9,7 @@
 #include "dda/common/atomic_file.hpp"
 #include "dda/common/error.hpp"
 #include "dda/common/model_io3_h5.hpp"
+#include "dda/common/origin_h5.hpp"
 #include "dda/df/results3d.hpp"
 #include "results_h5_util.hpp"
 
@@ -145,6 +146,8 @@ void write_results3_h5(const std::string& path, const Results3& results, const S
   h5::Writer w(path, out.temp_path());
   df::h5io::write_root(w, kResults3dFormat, kUnits, results.source, results.output, complete, sim.time(),
                        static_cast<int>(sim.log().size()));
+  // The origin at the root too, where readers of the series alone find it.
+  io::write_origin(w, w.file(), sim.model().origin);
   write_polyhedra_group(w, "model", results.blocks);
   std::vector<std::int32_t> fixed;
   for (const bool f : sim.model().fixed) fixed.push_back(f ? 1 : 0);
@@ -172,6 +175,8 @@ Results3 read_results3_h5(const std::string& path, const df::ResultsParts& parts
   out.source = root.source;
   out.output = root.output;
   out.complete = root.complete;
+  const Vec3 origin = io::read_origin3(r, r.file());
+  out.blocks.origin = origin;
   if (parts.series) read_series(r, out);
   if (parts.log) read_log(r, out);
   // Files written before the 3D energy ledger have none.
@@ -181,6 +186,7 @@ Results3 read_results3_h5(const std::string& path, const df::ResultsParts& parts
   for (const std::int64_t f : read_i64(r, "/fixed", nb)) out.fixed.push_back(f != 0);
   if (!parts.frames) return out;
   out.blocks = read_polyhedra_group(r, "model");
+  out.blocks.origin = origin;
   if (out.blocks.blocks.size() != nb) r.fail("dataset /fixed must have one value per block of /model");
   read_frames(r, out);
   if (!parts.checkpoint) return out;

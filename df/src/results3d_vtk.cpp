@@ -11,7 +11,7 @@
 namespace dda::df3 {
 
 void write_blocks3_frame_vtu(const std::string& path, const Simulation3& sim, const std::vector<Polyhedron>& initial) {
-  VtuGrid g;
+  VtuGrid g(sim.model().origin);
   std::vector<std::int64_t> id;
   std::vector<std::int32_t> fixed, material;
   std::vector<double> disp, vel, rot, stress, point_disp;
@@ -53,7 +53,7 @@ void write_blocks3_frame_vtu(const std::string& path, const Simulation3& sim, co
 }
 
 void write_contacts3_vtu(const std::string& path, const Simulation3& sim) {
-  VtuGrid g;
+  VtuGrid g(sim.model().origin);
   std::vector<std::int32_t> state, kind, bi, bj, joint;
   std::vector<double> normal, fn, fs;
   for (const Contact3& c : sim.contacts()) {

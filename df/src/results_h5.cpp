@@ -8,6 +8,7 @@
 #include "results_h5_util.hpp"
 #include "dda/common/atomic_file.hpp"
 #include "dda/common/error.hpp"
+#include "dda/common/origin_h5.hpp"
 #include "dda/df/results.hpp"
 
 namespace dda::df {
@@ -310,6 +311,7 @@ void write_results_h5(const std::string& path, const Results& results, const Sim
   h5io::write_root(w, kFormat, kUnits, results.source, results.output, complete, sim.time(),
                    static_cast<int>(sim.log().size()));
   w.attr_text(w.file(), "solver", results.solver);
+  io::write_origin(w, w.file(), sim.model().origin);
 
   write_model(w, results, sim.model());
   write_series(w, sim);
@@ -332,6 +334,8 @@ Results read_results_h5(const std::string& path, const ResultsParts& parts) {
   out.output = root.output;
   out.complete = root.complete;
   out.solver = r.attr_text(r.file(), "solver", "the file").value_or("auto");
+  const Vec2 origin = io::read_origin2(r, r.file());
+  out.blocks.origin = origin;
 
   const std::size_t offsets = length(r, "/model/blocks/offsets");
   if (offsets < 1) r.fail("dataset /model/blocks/offsets is empty");
@@ -342,6 +346,7 @@ Results read_results_h5(const std::string& path, const ResultsParts& parts) {
   if (parts.bolts) read_bolts(r, out);
   if (!parts.frames) return out;
   read_model(r, out);
+  out.blocks.origin = origin;
   read_frames(r, out);
   if (!parts.checkpoint) return out;
   std::vector<std::size_t> counts;

@@ -13,7 +13,7 @@ namespace dda::df {
 
 void write_blocks_frame_vtu(const std::string& path, const Simulation& sim) {
   const Model& model = sim.model();
-  VtuGrid g;
+  VtuGrid g(model.origin);
   std::vector<std::int64_t> id;
   std::vector<std::int32_t> material;
   std::vector<double> disp, vel, rot, stress, point_disp;
@@ -45,7 +45,7 @@ void write_blocks_frame_vtu(const std::string& path, const Simulation& sim) {
 }
 
 void write_contacts_vtu(const std::string& path, const Simulation& sim) {
-  VtuGrid g;
+  VtuGrid g(sim.model().origin);
   std::vector<std::int32_t> state, vblock, eblock, joint;
   std::vector<double> normal, fn, fs;
   for (const Contact& c : sim.contacts()) {

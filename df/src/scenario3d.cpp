@@ -9,6 +9,7 @@
 #include <map>
 #include <set>
 
+#include "dda/common/coordinate_range.hpp"
 #include "dda/common/error.hpp"
 #include "dda/df/ground_motion.hpp"
 #include "dda/df/time_step.hpp"
@@ -207,6 +208,7 @@ void add_block_points(const YamlNode& root, const PolyhedronModel& blocks, const
   df::BlockCatalogue<Vec3> catalogue;
   catalogue.path = blocks_path;
   catalogue.count = blocks.blocks.size();
+  catalogue.origin = blocks.origin;
   catalogue.centroid = [&](std::size_t b) { return blocks.blocks[b].centroid; };
   catalogue.contains = [&](std::size_t b, const Vec3& p) { return block_holds(blocks.blocks[b], p, tolerance); };
   catalogue.selection_keys = kPointSelectionKeys;
@@ -255,8 +257,9 @@ void add_points(const Parsed3& p, const YamlNode& root, const PolyhedronModel& b
     const int b = block_containing(blocks.blocks, pt.p, tolerance);
     if (b < 0) {
       if (placed) placed->fail_key("at", "(" + what + ") lies outside every block");
-      throw InputError(blocks_path + ": the " + what + " at (" + std::to_string(pt.p.x()) + ", " +
-                       std::to_string(pt.p.y()) + ", " + std::to_string(pt.p.z()) + ") lies outside every block.");
+      const Vec3 at = user_position(pt.p, blocks.origin);  // as the user gave it
+      throw InputError(blocks_path + ": the " + what + " at (" + std::to_string(at.x()) + ", " +
+                       std::to_string(at.y()) + ", " + std::to_string(at.z()) + ") lies outside every block.");
     }
     const bool held = m.fixed[static_cast<std::size_t>(b)];
     const std::string in_fixed = "lies in block " + std::to_string(b) + ", which is fixed, so ";
@@ -344,10 +347,15 @@ DfScenario3 read_df3_scenario(const YamlNode& root, const PolyhedronModel& block
   DfScenario3 out;
   Model3& m = out.model;
   m.blocks = blocks.blocks;
+  // Positions the scenario gives (water table, bolts' ends, `at`, levels
+  // and boxes of selections) are in the user's coordinates: each reader
+  // below takes them about the blocks' local origin (coordinate_range.hpp).
+  m.origin = blocks.origin;
   m.default_joint = p.joints.default_joint;
   m.joint_sets = df::joints_by_set(p.joints, blocks.sets, blocks_path);
   m.gravity = p.gravity;
   m.water = p.water;
+  if (m.water) m.water->move_to_origin(m.origin);
   m.fixed = select_fixed_blocks(p.fixed, blocks, blocks_path);
   assign_materials3(p.materials, blocks, blocks_path, m);  // after m.fixed: fixed blocks start at rest
   add_points(p, root, blocks, blocks_path, m);

@@ -10,7 +10,8 @@
 namespace dda::df3 {
 
 void add_bolts3(const YamlNode& root, const std::vector<Polyhedron>& blocks, double tolerance, Model3& m) {
-  for (const df::BoltEntry<Vec3>& e : df::read_bolt_entries<Vec3>(root, read_vec3)) {
+  for (df::BoltEntry<Vec3> e : df::read_bolt_entries<Vec3>(root, read_vec3)) {
+    e.from -= m.origin, e.to -= m.origin;  // given in the user's coordinates
     const int anchor = block_containing(blocks, e.from, tolerance);
     if (anchor < 0) e.node.fail_key("from", "lies outside every block");
     const int head = block_containing(blocks, e.to, tolerance);

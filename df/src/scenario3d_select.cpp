@@ -77,9 +77,13 @@ std::vector<bool> select_blocks(const BlockSelection3& s, const YamlNode& n, con
       selected[static_cast<std::size_t>(part)] = true;
   }
   const auto& bl = blocks.blocks;
-  if (s.below) select("below", [&](std::size_t b) { return bl[b].centroid.z() < *s.below; });
-  if (s.box) select("box", [&](std::size_t b) { return s.box->contains(bl[b].centroid); });
-  if (s.outside) select("outside", [&](std::size_t b) { return !s.outside->contains(bl[b].centroid); });
+  // Levels and boxes are given in the user's coordinates; the blocks lie
+  // about their local origin (coordinate_range.hpp).
+  const Vec3 o = blocks.origin;
+  auto local = [&](const Box3& box) { return Box3{box.lo - o, box.hi - o}; };
+  if (s.below) select("below", [&](std::size_t b) { return bl[b].centroid.z() < *s.below - o.z(); });
+  if (s.box) select("box", [&](std::size_t b) { return local(*s.box).contains(bl[b].centroid); });
+  if (s.outside) select("outside", [&](std::size_t b) { return !local(*s.outside).contains(bl[b].centroid); });
   if (!s.removability.empty()) {
     std::set<Removability> classes;
     for (const auto& r : s.removability) classes.insert(r.second);

@@ -6,6 +6,7 @@
 #include <optional>
 #include <set>
 
+#include "dda/common/coordinate_range.hpp"
 #include "dda/common/error.hpp"
 #include "dda/common/geometry.hpp"
 #include "dda/common/geometry3.hpp"
@@ -111,7 +112,7 @@ std::size_t resolve_block(const BlockPointSpec& s, const BlockCatalogue<Vec>& bl
   }
   std::vector<std::size_t> picked;
   if (s.key == "containing") {
-    const Vec p = to_vec<Vec>(s.containing);
+    const Vec p = to_vec<Vec>(s.containing) - blocks.origin;
     for (std::size_t b = 0; b < blocks.count; ++b)
       if (blocks.contains(b, p)) picked.push_back(b);
     if (picked.empty())
@@ -163,10 +164,10 @@ std::vector<BlockPoint<Vec>> place_block_points(const YamlNode& root, const Bloc
     const std::size_t b = resolve_block(s, blocks);
     Vec position = blocks.centroid(b);
     if (s.at) {
-      position = to_vec<Vec>(*s.at);
+      position = to_vec<Vec>(*s.at) - blocks.origin;
       if (!blocks.contains(b, position))
         s.item.fail_key("at", "puts point '" + s.name + "' at " + coordinates_text(*s.at) + ", outside block " +
-                                  std::to_string(b) + " (centroid " + coordinates_text(from_vec(blocks.centroid(b))) +
+                                  std::to_string(b) + " (centroid " + coordinates_text(from_vec<Vec>(user_position<Vec>(blocks.centroid(b), blocks.origin))) +
                                   "), the block it names");
     }
     out.push_back({s.name, static_cast<int>(b), position});

@@ -28,6 +28,10 @@ template <class Vec>
 struct BlockCatalogue {
   std::string path;        // the blocks file, for messages
   std::size_t count = 0;   // number of blocks
+  // The blocks' local origin (coordinate_range.hpp): `at` and `containing`
+  // are given in the user's coordinates, the blocks and the positions
+  // placed are about this origin.
+  Vec origin = Vec::Zero();
   std::function<Vec(std::size_t)> centroid;
   // Block b holds p: inside it or on its boundary (within the model's
   // rounding tolerance).

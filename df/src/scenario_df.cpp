@@ -7,6 +7,7 @@
 #include <map>
 #include <set>
 
+#include "dda/common/coordinate_range.hpp"
 #include "dda/common/error.hpp"
 #include "dda/df/scenario.hpp"
 #include "dda/df/time_step.hpp"
@@ -267,6 +268,19 @@ Parsed parse(const YamlNode& root) {
   return p;
 }
 
+// Every absolute position of the DF sections (zones, bolts' ends, the water
+// table) is given in the user's coordinates: about the blocks' local origin
+// (coordinate_range.hpp), as the blocks are. Points named from the blocks
+// file are there already; displacements, forces and velocities do not move.
+void move_to_origin(Parsed& p, const Vec2& o) {
+  if (o == Vec2::Zero()) return;
+  for (Zone& z : p.zones)
+    if (z.polygon)
+      for (Vec2& v : *z.polygon) v -= o;
+  for (auto& entry : p.bolts) entry.second.anchor -= o, entry.second.head -= o;
+  if (p.water) p.water->move_to_origin(o);
+}
+
 bool has_any_df_section(const YamlNode& root) {
   for (const char* k : {"materials", "joints", "loading", "fixed", "bolts", "boundaries", "water", "control"})
     if (root.has(k)) return true;
@@ -360,6 +374,7 @@ void add_block_points(const YamlNode& root, const BlockModel& blocks, const std:
   BlockCatalogue<Vec2> catalogue;
   catalogue.path = blocks_path;
   catalogue.count = blocks.blocks.size();
+  catalogue.origin = blocks.origin;
   catalogue.centroid = [&](std::size_t b) { return blocks.blocks[b].centroid; };
   catalogue.contains = [&](std::size_t b, const Vec2& p) {
     const Polygon2& poly = blocks.blocks[b].vertices;
@@ -396,15 +411,17 @@ void check_blocks_for_df(const BlockModel& blocks, const std::string& blocks_pat
       if (root->has("geometry"))
         root->child("geometry").fail("holds the " + what + ", which lies outside every block");
     }
-    throw InputError(blocks_path + ": the " + what + " at (" + std::to_string(lp.point.p.x()) + ", " +
-                     std::to_string(lp.point.p.y()) + ") lies outside every block.");
+    const Vec2 at = user_position(lp.point.p, blocks.origin);  // as the user gave it
+    throw InputError(blocks_path + ": the " + what + " at (" + std::to_string(at.x()) + ", " +
+                     std::to_string(at.y()) + ") lies outside every block.");
   }
 }
 
 DfScenario read_df_scenario(const YamlNode& root, const BlockModel& blocks, const std::string& blocks_path) {
   if (!root.has("control"))
     root.fail_key("control", "is required for a forward run (it gives the run length)");
-  const Parsed p = parse(root);
+  Parsed p = parse(root);
+  move_to_origin(p, blocks.origin);
   check_blocks_for_df(blocks, blocks_path, root);
 
   DfScenario out;

@@ -31,6 +31,9 @@ struct Builder {
   // Fails at node.key if `more` further lines would pass kMaxLines.
   void check_line_budget(double more, const YamlNode& node, const std::string& key, const std::string& what) const;
   double domain_area() const;
+  // A position the user gave, about the model's local origin (the domain
+  // chose it; coordinate_range.hpp).
+  Vec2 local(const Vec2& user) const { return user - model.origin; }
 };
 
 // One function per scenario section, in the order generate_from_scenario calls them.

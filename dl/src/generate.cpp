@@ -67,8 +67,11 @@ DlResult generate_from_scenario(const YamlNode& root) {
   b.seed = scenario_seed(root);
   b.report["seed"] = b.seed;
   detail::read_domain(root, b);
-  // The domain first, before any joint is generated in it.
+  // The domain first, before any joint is generated in it; it chooses the
+  // local origin every later position is read about.
   check_coordinate_range(b.model.domain, root.file());
+  b.model.origin = choose_local_origin(b.model.domain);
+  for (Vec2& v : b.model.domain) v -= b.model.origin;
   detail::read_excavations(root, b);
   detail::read_joint_sets(root, b);
   detail::read_layering(root, b);
@@ -78,6 +81,8 @@ DlResult generate_from_scenario(const YamlNode& root) {
   detail::read_points(root, b);
   detail::add_totals_to_report(b);
   check_coordinate_range(b.model, root.file());
+  // A model without a domain chooses its origin from everything it holds.
+  if (b.model.domain.empty()) move_to_local_origin(b.model);
 
   Provenance& p = b.model.provenance;
   p.scenario_text = root.source_text();

@@ -92,8 +92,15 @@ DlResult3 generate_3d_from_scenario(const YamlNode& root) {
   b.report["dimension"] = 3;
   b.report["seed"] = b.seed;
   detail::read_domain3(root, b);
-  // The domain first, before any fracture is generated in it.
-  check_coordinate_range(std::vector<Vec3>{b.model.domain.lo, b.model.domain.hi}, root.file());
+  // The domain first, before any fracture is generated in it; it chooses
+  // the local origin every later position is read about.
+  const std::vector<Vec3> domain =
+      b.model.domain_surface ? b.model.domain_surface->vertices : std::vector<Vec3>{b.model.domain.lo, b.model.domain.hi};
+  check_coordinate_range(domain, root.file());
+  b.model.origin = choose_local_origin(domain);
+  b.model.domain.lo -= b.model.origin, b.model.domain.hi -= b.model.origin;
+  if (b.model.domain_surface)
+    for (Vec3& v : b.model.domain_surface->vertices) v -= b.model.origin;
   detail::read_fracture_sets3(root, b);
   detail::read_persistent_sets3(root, b);
   detail::read_planes3(root, b);

@@ -27,6 +27,9 @@ struct Builder3 {
   // Fails at node.key unless `name` is free (for sets that a library call adds).
   void check_set_name_free(const std::string& name, const YamlNode& node, const std::string& key) const;
   double diagonal() const { return (model.domain.hi - model.domain.lo).norm(); }
+  // A position the user gave, about the model's local origin (the domain
+  // chose it; coordinate_range.hpp).
+  Vec3 local(const Vec3& user) const { return user - model.origin; }
 };
 
 // [x, y, z] at node.key, or the node itself.

@@ -91,13 +91,13 @@ std::pair<Vec3, Vec3> tunnel_frame(const Vec3& axis) {
   return {up, up.cross(axis).normalized()};
 }
 
-ConvexRegion tunnel(const YamlNode& n, nlohmann::json& rep) {
+ConvexRegion tunnel(const YamlNode& n, nlohmann::json& rep, const Builder3& b) {
   const std::string section = n.choice("section", {"circle", "rectangle"}, "circle");
   if (section == "circle")
     n.allow({"shape", "name", "section", "start", "end", "radius", "sides"});
   else
     n.allow({"shape", "name", "section", "start", "end", "width", "height"});
-  const Vec3 start = point3(n, "start"), end = point3(n, "end");
+  const Vec3 start = b.local(point3(n, "start")), end = b.local(point3(n, "end"));
   if (!((end - start).norm() > 0)) n.fail_key("end", "must differ from start (the tunnel has no length)");
   const Vec3 axis = (end - start).normalized();
   const auto [up, side] = tunnel_frame(axis);
@@ -130,11 +130,11 @@ ConvexRegion tunnel(const YamlNode& n, nlohmann::json& rep) {
   return r;
 }
 
-ConvexRegion read_region(const YamlNode& n, const std::string& shape, nlohmann::json& rep) {
-  if (shape == "tunnel") return tunnel(n, rep);
+ConvexRegion read_region(const YamlNode& n, const std::string& shape, nlohmann::json& rep, const Builder3& b) {
+  if (shape == "tunnel") return tunnel(n, rep, b);
   if (shape == "box") {
     n.allow({"shape", "name", "min", "max"});
-    const Vec3 lo = point3(n, "min"), hi = point3(n, "max");
+    const Vec3 lo = b.local(point3(n, "min")), hi = b.local(point3(n, "max"));
     if (!(hi.array() > lo.array()).all()) n.fail_key("max", "must be greater than min in x, y and z");
     return box_region({lo, hi});
   }
@@ -142,10 +142,10 @@ ConvexRegion read_region(const YamlNode& n, const std::string& shape, nlohmann::
     n.allow({"shape", "name", "dip", "dip_direction", "point", "floor"});
     const double dip = read_dip(n, "dip"), dd = read_dip_direction(n, "dip_direction");
     const Vec3 face = normal_from_dip(dip, dd);  // upper normal: it points into the air
-    ConvexRegion r{{unit_half_space(-face, point3(n, "point"))}};
+    ConvexRegion r{{unit_half_space(-face, b.local(point3(n, "point")))}};
     if (n.has("floor")) {
       const double floor = n.number("floor", Range::any());
-      r.half_spaces.push_back({Vec3(0, 0, -1), -floor});  // the air above the toe level
+      r.half_spaces.push_back({Vec3(0, 0, -1), -(floor - b.model.origin.z())});  // the air above the toe level
       rep["floor"] = floor;
     }
     rep["dip"] = dip;
@@ -160,7 +160,7 @@ ConvexRegion read_region(const YamlNode& n, const std::string& shape, nlohmann::
     p.allow({"normal", "point"});
     const Vec3 normal = point3(p, "normal");
     if (!(normal.norm() > 0)) p.fail_key("normal", "must not be the zero vector");
-    r.half_spaces.push_back(unit_half_space(normal, point3(p, "point")));
+    r.half_spaces.push_back(unit_half_space(normal, b.local(point3(p, "point"))));
   }
   return r;
 }
@@ -199,8 +199,12 @@ void read_excavations3(const YamlNode& root, Builder3& b) {
     for (const Excavation3& other : b.model.excavations)
       if (other.name == ex.name) n.fail_key("name", "'" + ex.name + "' is already the name of another excavation");
     nlohmann::json entry = {{"name", ex.name}, {"shape", shape}};
-    if (shape == "surface") ex.surface = read_surface(root, n, entry);
-    else ex.region = read_region(n, shape, entry);
+    if (shape == "surface") {
+      ex.surface = read_surface(root, n, entry);
+      for (Vec3& v : ex.surface->vertices) v = b.local(v);
+    } else {
+      ex.region = read_region(n, shape, entry, b);
+    }
     const double volume =
         ex.surface ? volume_in_box(*ex.surface, b.model.domain) : volume_in_box(ex.region, b.model.domain);
     if (!(volume > 1e-12 * b.model.domain.volume()))

@@ -49,6 +49,8 @@ void read_fracture_files3(const YamlNode& root, Builder3& b) {
     }
     std::size_t kept = 0;
     for (Fracture3& f : imported.fractures) {
+      f.centre = b.local(f.centre);  // files hold the user's coordinates
+      for (Vec3& v : f.vertices) v = b.local(v);
       if (!(fracture_area_in_box(f, b.model.domain) > 0)) continue;  // DC would ignore it
       f.set = set_of[static_cast<std::size_t>(f.set)];
       b.model.fractures.push_back(std::move(f));

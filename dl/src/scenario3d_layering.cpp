@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "builder.hpp"
+#include "dda/common/coordinate_range.hpp"
 #include "dda/dl/dfn3d.hpp"
 #include "dda/dl/layering3d.hpp"
 #include "scenario3d_builder.hpp"
@@ -91,11 +92,12 @@ void read_layering3(const YamlNode& root, Builder3& b) {
   b.asked_p32.resize(b.model.sets.size());
 
   nlohmann::json beds = nlohmann::json::array();
+  const double level0 = b.model.bed_normal.dot(b.model.origin);  // the report gives the user's levels
   for (std::size_t i = 0; i < out.layers.size(); ++i) {
     const Layer& l = out.layers[i];
     beds.push_back({{"index", i},
-                    {"bottom", l.bottom},
-                    {"top", l.top},
+                    {"bottom", user_level(l.bottom, level0)},
+                    {"top", user_level(l.top, level0)},
                     {"thickness", l.thickness()},
                     {"drawn_thickness", out.drawn_thickness[i]},
                     {"target_fsi", l.target_fsi},

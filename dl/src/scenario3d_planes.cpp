@@ -17,7 +17,7 @@ void read_persistent_sets3(const YamlNode& root, Builder3& b) {
     spec.dip_deg = read_dip(n, "dip");
     spec.dip_direction_deg = read_dip_direction(n, "dip_direction");
     spec.spacing = n.number("spacing", Range::positive());
-    if (n.has("point")) spec.point = point3(n, "point");
+    if (n.has("point")) spec.point = b.local(point3(n, "point"));
     spec.randomness = n.number("randomness", 0.0, Range::half_open(0, 1));
     const int set = b.add_new_set(spec.name, "persistent", n, "name");
     Stream rng(b.seed, "persistent3d.set", i);
@@ -50,7 +50,8 @@ void read_planes3(const YamlNode& root, Builder3& b) {
     const std::string name = read_name(n, "P", i);
     spec.dip_deg = read_dip(n, "dip");
     spec.dip_direction_deg = read_dip_direction(n, "dip_direction");
-    spec.point = point3(n, "point");
+    const Vec3 user_point = point3(n, "point");
+    spec.point = b.local(user_point);
     if (n.has("radius")) spec.radius = n.number("radius", Range::positive());
     // One set per plane: a fault or a mapped joint usually has properties of
     // its own in DF, and a set is what carries them.
@@ -63,7 +64,7 @@ void read_planes3(const YamlNode& root, Builder3& b) {
                    {"set", set},
                    {"dip", spec.dip_deg},
                    {"dip_direction", spec.dip_direction_deg},
-                   {"point", {spec.point.x(), spec.point.y(), spec.point.z()}},
+                   {"point", {user_point.x(), user_point.y(), user_point.z()}},
                    {"radius", spec.radius ? nlohmann::json(*spec.radius) : nlohmann::json(nullptr)}});
   }
   b.report["planes"] = rep;

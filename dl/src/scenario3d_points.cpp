@@ -12,11 +12,12 @@ void read_points3(const YamlNode& root, Builder3& b) {
     p.name = n.text("name");
     if (p.name.empty()) n.fail_key("name", "must not be empty");
     p.kind = read_point_kind(n);
-    p.p = point3(n, "at");
+    const Vec3 at = point3(n, "at");
+    p.p = b.local(at);
     for (const ModelPoint3& q : b.model.points)
       if (q.name == p.name) n.fail_key("name", "'" + p.name + "' is already the name of another point");
     if (!b.model.domain.contains(p.p))
-      n.fail_key("at", "puts point '" + p.name + "' at " + point_text(p.p) + ", outside the domain");
+      n.fail_key("at", "puts point '" + p.name + "' at " + point_text(at) + ", outside the domain");
     b.model.points.push_back(p);
   }
   std::vector<PointKind> kinds;

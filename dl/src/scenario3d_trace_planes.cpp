@@ -34,14 +34,15 @@ void read_trace_planes3(const YamlNode& root, Builder3& b) {
                  "must hold only letters, digits, '_' and '-' (it becomes part of a file name), got '" + t.name + "'");
     for (const TracePlaneSpec& other : b.trace_planes)
       if (other.name == t.name) n.fail_key("name", "'" + t.name + "' is already the name of another trace plane");
-    t.point = point3(n, "point");
+    const Vec3 user_point = point3(n, "point");
+    t.point = b.local(user_point);
     t.dip_deg = read_dip(n, "dip");
     t.dip_direction_deg = read_dip_direction(n, "dip_direction");
     const Vec3 normal = normal_from_dip(t.dip_deg, t.dip_direction_deg);
     const Polygon3 section = plane_in_box(normal, normal.dot(t.point), b.model.domain);
-    if (section.empty()) n.fail("misses the domain (the plane through " + point_text(t.point) + " must cut it)");
+    if (section.empty()) n.fail("misses the domain (the plane through " + point_text(user_point) + " must cut it)");
     rep.push_back({{"name", t.name},
-                   {"point", {t.point.x(), t.point.y(), t.point.z()}},
+                   {"point", {user_point.x(), user_point.y(), user_point.z()}},
                    {"dip", t.dip_deg},
                    {"dip_direction", t.dip_direction_deg},
                    {"section_area", polygon_area(section)}});

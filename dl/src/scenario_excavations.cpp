@@ -13,22 +13,22 @@ int segments_of(const YamlNode& n, long long fallback) {
   return static_cast<int>(n.integer("segments", fallback, Range::closed(3, 100000)));
 }
 
-Polygon2 read_shape(const YamlNode& n, const std::string& shape) {
+Polygon2 read_shape(const YamlNode& n, const std::string& shape, const Builder& b) {
   if (shape == "rectangle") {
     n.allow({"shape", "center", "width", "height"});
-    return rectangle_outline(n.point("center"), n.number("width", Range::positive()),
+    return rectangle_outline(b.local(n.point("center")), n.number("width", Range::positive()),
                              n.number("height", Range::positive()));
   }
   if (shape == "circle") {
     n.allow({"shape", "center", "radius", "segments"});
-    return circle_outline(n.point("center"), n.number("radius", Range::positive()), segments_of(n, 48));
+    return circle_outline(b.local(n.point("center")), n.number("radius", Range::positive()), segments_of(n, 48));
   }
   if (shape == "horseshoe") {
     n.allow({"shape", "center", "radius", "invert_depth", "segments"});
     const double r = n.number("radius", Range::positive());
     const double d = n.number("invert_depth", 0.5 * r, Range::non_negative());
     if (d >= r) n.fail_key("invert_depth", "must be smaller than the radius " + format_number(r) + ", got " + format_number(d));
-    return horseshoe_outline(n.point("center"), r, d, segments_of(n, 48));
+    return horseshoe_outline(b.local(n.point("center")), r, d, segments_of(n, 48));
   }
   if (shape == "arch") {
     n.allow({"shape", "center", "width", "wall_height", "rise", "segments"});
@@ -38,11 +38,12 @@ Polygon2 read_shape(const YamlNode& n, const std::string& shape) {
     if (rise > 0.5 * w + 1e-12 * w)
       n.fail_key("rise", "must be at most half the width (" + format_number(0.5 * w) + ", a semicircle), got " +
                              format_number(rise));
-    return arch_outline(n.point("center"), w, wall, std::min(rise, 0.5 * w), segments_of(n, 24));
+    return arch_outline(b.local(n.point("center")), w, wall, std::min(rise, 0.5 * w), segments_of(n, 24));
   }
   // polygon
   n.allow({"shape", "vertices"});
   Polygon2 poly = n.polygon("vertices");
+  for (Vec2& v : poly) v = b.local(v);
   if (!is_simple_polygon(poly)) n.fail_key("vertices", "must be a simple polygon (its edges cross or touch)");
   make_counter_clockwise(poly);
   return poly;
@@ -55,7 +56,7 @@ void read_excavations(const YamlNode& root, Builder& b) {
   for (const YamlNode& n : root.list_or_empty("excavations")) {
     if (!n.is_map()) n.fail("must be a mapping with a shape (rectangle, circle, horseshoe, arch or polygon)");
     const std::string shape = n.choice("shape", {"rectangle", "circle", "horseshoe", "arch", "polygon"});
-    Polygon2 poly = read_shape(n, shape);
+    Polygon2 poly = read_shape(n, shape, b);
     if (!b.model.domain.empty() && !polygon_inside(b.model.domain, poly))
       n.fail("lies partly or wholly outside the domain; an excavation must be inside it");
     for (std::size_t i = 0; i < b.model.excavations.size(); ++i)

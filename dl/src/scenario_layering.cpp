@@ -2,6 +2,7 @@
 #include <cmath>
 
 #include "builder.hpp"
+#include "dda/common/coordinate_range.hpp"
 #include "dda/common/error.hpp"
 #include "dda/dl/layering.hpp"
 
@@ -102,13 +103,15 @@ void read_layering(const YamlNode& root, Builder& b) {
   nlohmann::json layers = nlohmann::json::array();
   double sum = 0, sum2 = 0, tmin = 1e300, tmax = 0;
   const std::size_t nfull = out.layers.empty() ? 0 : out.layers.size() - 1;  // the last bed is cut
+  // Beds are levels about the local origin; the report gives the user's levels.
+  const double level0 = level_along_beds(b.model.origin, spec.dip_deg);
   for (std::size_t i = 0; i < out.layers.size(); ++i) {
     const Layer& l = out.layers[i];
     std::size_t joints_in_bed = 0;
     for (const auto& per : out.per_set) joints_in_bed += per[i].joints;
     layers.push_back({{"index", i},
-                      {"bottom", l.bottom},
-                      {"top", l.top},
+                      {"bottom", user_level(l.bottom, level0)},
+                      {"top", user_level(l.top, level0)},
                       {"thickness", l.thickness()},
                       {"target_fsi", l.target_fsi},
                       {"realised_fsi", l.realised_fsi},

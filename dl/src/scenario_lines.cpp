@@ -17,7 +17,7 @@ void read_user_lines(const YamlNode& root, Builder& b) {
     n.allow({"set", "from", "to"});
     const std::string name = n.text("set", "user");
     if (name.empty()) n.fail_key("set", "must not be empty");
-    const Segment s{n.point("from"), n.point("to")};
+    const Segment s{b.local(n.point("from")), b.local(n.point("to"))};
     if (s.a == s.b) n.fail_key("to", "must differ from 'from' (the line has zero length)");
     const int set = b.find_or_add_set(name, "user");
     const int pieces = b.add_clipped(s, set);
@@ -46,7 +46,7 @@ void read_traces(const YamlNode& root, Builder& b) {
     std::size_t kept = 0, outside = 0;
     for (const CsvTrace& t : traces) {
       const int set = b.find_or_add_set(t.set.empty() ? default_set : t.set, "csv");
-      const int pieces = b.add_clipped(t.seg, set);
+      const int pieces = b.add_clipped({b.local(t.seg.a), b.local(t.seg.b)}, set);
       kept += static_cast<std::size_t>(pieces);
       outside += pieces == 0;
     }
@@ -72,15 +72,15 @@ void read_geometry(const YamlNode& root, Builder& b) {
   std::size_t kept = 0;
   for (const JointLine& l : geo.lines) {
     const int set = b.find_or_add_set(geo.sets[static_cast<std::size_t>(l.set)].name, "geo");
-    kept += static_cast<std::size_t>(b.add_clipped({l.a, l.b}, set));
+    kept += static_cast<std::size_t>(b.add_clipped({b.local(l.a), b.local(l.b)}, set));
   }
   for (const ModelPoint& p : geo.points) {
     for (const ModelPoint& q : b.model.points)
       if (q.name == p.name) node->fail_key("file", "holds a second point named '" + p.name + "'");
-    if (!b.model.domain.empty() && !point_in_polygon(b.model.domain, p.p))
+    if (!b.model.domain.empty() && !point_in_polygon(b.model.domain, b.local(p.p)))
       node->fail_key("file", "holds the " + std::string(to_string(p.kind)) + " point '" + p.name + "' at (" +
                                  format_number(p.p.x()) + ", " + format_number(p.p.y()) + "), outside the domain");
-    b.model.points.push_back(p);
+    b.model.points.push_back({p.name, p.kind, b.local(p.p)});
   }
   b.report["geometry"] = {{"file", file}, {"lines", geo.lines.size()}, {"pieces_in_domain", kept},
                           {"points", geo.points.size()}};

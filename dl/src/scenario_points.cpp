@@ -11,11 +11,12 @@ void read_points(const YamlNode& root, Builder& b) {
     p.name = n.text("name");
     if (p.name.empty()) n.fail_key("name", "must not be empty");
     p.kind = read_point_kind(n);
-    p.p = n.point("at");
+    const Vec2 at = n.point("at");
+    p.p = b.local(at);
     for (const ModelPoint& q : b.model.points)
       if (q.name == p.name) n.fail_key("name", "'" + p.name + "' is already the name of another point");
     if (!b.model.domain.empty() && !point_in_polygon(b.model.domain, p.p))
-      n.fail_key("at", "puts point '" + p.name + "' at (" + format_number(p.p.x()) + ", " + format_number(p.p.y()) +
+      n.fail_key("at", "puts point '" + p.name + "' at (" + format_number(at.x()) + ", " + format_number(at.y()) +
                            "), outside the domain");
     b.model.points.push_back(p);
   }

@@ -45,7 +45,7 @@ import math
 import os
 import sys
 
-from plot_io import PROG, fail, save_atomically
+from plot_io import PROG, fail, label_user_coordinates, origin_of, save_atomically
 
 POINT_STYLE = {  # kind code -> (marker, colour, label); codes as in docs/formats.md
     0: ("^", "black", "fixed point"),
@@ -109,6 +109,7 @@ class Model:
             return [text(s) for s in f[name][()]] if name in f else []
 
         self.dip = float(f.attrs.get("bedding_dip_deg", 0.0))
+        self.origin = origin_of(f, 2)
         self.set_names = strings("sets/name")
         self.point_names = strings("points/name")
         self.point_kind = arr("points/kind", dtype=int)
@@ -228,8 +229,9 @@ def draw_blocks(ax, m, names=True):
     return handles, bounds
 
 
-def finish_map(ax, bounds, title, handles, axis_labels=("x (m)", "y (m)")):
+def finish_map(ax, bounds, title, handles, axis_labels=("x (m)", "y (m)"), origin=(0.0, 0.0)):
     ax.set_aspect("equal")
+    label_user_coordinates((ax.xaxis, ax.yaxis), origin)
     if bounds:
         allp = np.vstack(bounds)
         lo, hi = allp.min(axis=0), allp.max(axis=0)
@@ -260,7 +262,7 @@ def plot_maps(models, labels, kind, names, axis_labels):
         else:
             handles, bounds = draw_blocks(ax, m, names)
             sub = f"{m.num_blocks} blocks"
-        finish_map(ax, bounds, f"{label} ({sub})" if label else sub, handles, axis_labels)
+        finish_map(ax, bounds, f"{label} ({sub})" if label else sub, handles, axis_labels, m.origin)
     for ax in list(axes.flat)[n:]:
         ax.set_visible(False)
     return fig

@@ -18,6 +18,8 @@ import math
 import numpy as np
 from mpl_toolkits.mplot3d.art3d import Line3DCollection, Poly3DCollection
 
+from plot_io import label_user_coordinates, origin_of
+
 MODE_COLOURS = {
     0: ((0.80, 0.80, 0.80), "not exposed"),
     1: ((0.82, 0.71, 0.55), "tapered"),
@@ -43,6 +45,7 @@ def read_blocks3d(f, arr):
     m["layer"] = arr("blocks/layer", dtype=int)
     m["mode"] = arr("bodies/removability", dtype=int)
     m["box"] = arr("domain/box", (3,)).reshape(-1, 3)
+    m["origin"] = origin_of(f, 3)
     nb = len(m["voff"]) - 1
     if nb < 0 or len(m["foff"]) != nb + 1 or len(m["body"]) != nb:
         raise ValueError("/blocks offsets do not match")
@@ -59,6 +62,7 @@ def read_fractures(f, arr):
     m["offsets"] = arr("fractures/offsets", dtype=np.int64)
     m["set"] = arr("fractures/set", dtype=int)
     m["box"] = arr("domain/box", (3,)).reshape(-1, 3)
+    m["origin"] = origin_of(f, 3)
     return m
 
 
@@ -109,7 +113,7 @@ def box_edges(box):
     return [(c[i], c[j]) for i in range(8) for j in range(i + 1, 8) if bin(i ^ j).count("1") == 1]
 
 
-def finish_axes(ax, pts, view, title):
+def finish_axes(ax, pts, view, title, origin=(0.0, 0.0, 0.0)):
     lo, hi = pts.min(axis=0), pts.max(axis=0)
     ax.set_xlim(lo[0], hi[0])
     ax.set_ylim(lo[1], hi[1])
@@ -123,6 +127,7 @@ def finish_axes(ax, pts, view, title):
     ax.zaxis.set_rotate_label(False)  # upright: matplotlib turns it upside down for some camera angles
     ax.set_zlabel("z up\n(m)", labelpad=6)
     ax.set_title(title, fontsize=10)
+    label_user_coordinates((ax.xaxis, ax.yaxis, ax.zaxis), origin)
 
 
 def draw_blocks3d(ax, m, color, explode, view, title):
@@ -162,7 +167,7 @@ def draw_blocks3d(ax, m, color, explode, view, title):
         lw = 0.3 if len(polys) < 20000 else 0.1
         ax.add_collection3d(Poly3DCollection(polys, facecolors=colours, edgecolors="black", linewidths=lw))
     pts = np.vstack(polys) if polys else (m["box"] if len(m["box"]) == 2 else np.zeros((2, 3)))
-    finish_axes(ax, pts, view, title)
+    finish_axes(ax, pts, view, title, m["origin"])
     if color == "removability" and len(m["mode"]):
         from matplotlib.patches import Patch
         present = sorted(set(int(x) for x in m["mode"]))
@@ -196,7 +201,7 @@ def draw_fractures(ax, m, set_names, colours, view, title):
         else np.zeros((2, 3))
     if box is not None:
         pts = box  # the domain frames the view; discs may reach beyond it
-    finish_axes(ax, pts, view, title)
+    finish_axes(ax, pts, view, title, m["origin"])
     from matplotlib.patches import Patch
     used = sorted(set(int(s) for s in m["set"] if s >= 0))
     ax.legend(handles=[Patch(color=colours[s % len(colours)], label=set_names[s] if s < len(set_names) else f"set {s}")

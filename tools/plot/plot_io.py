@@ -54,3 +54,22 @@ def save_atomically(fig, out):
     labels = [ax.zaxis.label for ax in fig.axes if hasattr(ax, "zaxis")]
     write_atomically(out, lambda tmp: fig.savefig(tmp, format=ext[1:], dpi=150, bbox_inches="tight",
                                                   bbox_extra_artists=fig.get_default_bbox_extra_artists() + labels))
+
+
+def origin_of(f, dims):
+    """The local origin of an open dda HDF5 file (docs/formats.md): its
+    positions are the user's coordinates less it; zeros when it has none."""
+    return [float(f.attrs.get(k, 0.0)) for k in ("origin_x", "origin_y", "origin_z")[:dims]]
+
+
+def label_user_coordinates(axes, origin):
+    """Figures are drawn in the file's local coordinates (full precision, a
+    model far from the origin would be rounded to the spacing of doubles
+    there); the tick labels of each axis (matplotlib x, y[, z] axes, in
+    order) give the user's coordinates, local + origin, to 15 digits."""
+    from matplotlib.ticker import FuncFormatter
+    for k, (axis, o) in enumerate(zip(axes, origin)):
+        if o != 0:
+            axis.set_major_formatter(FuncFormatter(lambda v, pos, o=o: "%.15g" % (v + o)))
+            if k == 0 and len(axes) == 2:  # long numbers side by side would overlap on a map
+                axis.set_tick_params(labelrotation=30)

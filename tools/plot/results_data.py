@@ -10,6 +10,8 @@ message and exit status.
 
 import numpy as np
 
+from plot_io import origin_of
+
 RESULTS_FORMATS = ("dda-results", "dda-results3d")
 STATE_NAMES = ("open", "sliding", "locked")  # contact state codes 0, 1, 2
 
@@ -53,6 +55,7 @@ class Results:
         if self.format not in RESULTS_FORMATS:
             raise ResultsError(f"{path}: is not a dda results file (format '{self.format}')")
         self.dim = 3 if self.format == "dda-results3d" else 2
+        self.origin = origin_of(f, self.dim)  # positions are about it (docs/formats.md)
         self._f = f
         self.attrs = {k: text(f.attrs[k]) for k in f.attrs if k != "scenario"}
         self.scenario_text = text(f.attrs.get("scenario", ""))

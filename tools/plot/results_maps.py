@@ -12,6 +12,7 @@ from matplotlib.colors import Normalize
 from matplotlib.lines import Line2D
 
 import results_views3d as v3
+from plot_io import label_user_coordinates
 from results_quantities import block_quantity, readable_unit, shared_scale
 
 STATE_STYLE = {0: ("0.55", "open"), 1: ("#e66101", "sliding"), 2: ("#2c7bb6", "locked")}
@@ -98,6 +99,7 @@ def deformed_2d(r, frames, color_by, component, vectors):
             arrows = draw_vectors(ax, r.block_means(verts), r.block_means(verts) - r.block_means(r.vertices0),
                                   plane_extent(verts))
         finish_plane(ax, verts, "x (m)", "y (m)", time_label(r, k) + arrows)
+        label_user_coordinates((ax.xaxis, ax.yaxis), r.origin)
         fig.colorbar(pc, ax=ax, label=label, shrink=0.85)
     fig.suptitle(f"Deformed blocks coloured by {quantities[0].label}", fontsize=11)
     fig.tight_layout()
@@ -126,6 +128,7 @@ def deformed_3d(r, frames, color_by, component, vectors, looks):
                 arrows = draw_vectors(ax, view.project(means), view.project(du), plane_extent(screen))
             xlabel, ylabel = view.axis_labels()
             finish_plane(ax, screen, xlabel, ylabel, f"{view.title}\n{time_label(r, k)}{arrows}")
+            label_user_coordinates((ax.xaxis, ax.yaxis), view.project(r.origin))
         fig.colorbar(pc, ax=list(axes[row]), label=label, shrink=0.85)
     fig.suptitle(f"Deformed blocks coloured by {quantities[0].label}", fontsize=11)
     return fig
@@ -148,7 +151,8 @@ def sections_3d(r, frame, color_by, component, sections):
         else:
             ax.text(0.5, 0.5, "the plane cuts no block", ha="center", va="center", transform=ax.transAxes)
         finish_plane(ax, np.vstack(polys) if polys else np.zeros((0, 2)), xlabel, ylabel,
-                     v3.section_title(axis, value))
+                     v3.section_title(axis, value, r.origin))
+        label_user_coordinates((ax.xaxis, ax.yaxis), [r.origin[a] for a in v3.section_axes(axis)])
     if pc is not None:
         fig.colorbar(pc, ax=list(axes.flat), label=label, shrink=0.85)
     fig.suptitle(f"Sections through the blocks, {time_label(r, frame)}", fontsize=11)
@@ -190,6 +194,7 @@ def contacts_figure(r, look):
                                          linewidths=edge_width(len(blocks)), zorder=1))
         finish_plane(ax, np.vstack(blocks) if len(blocks) else np.zeros((0, 2)), xlabel, ylabel,
                      f"{title}{where}")
+        label_user_coordinates((ax.xaxis, ax.yaxis), project(np.asarray(r.origin)))
         if note:
             ax.text(0.5, 0.5, note.split(": ", 1)[-1] if ": " in note else note, ha="center", va="center",
                     wrap=True, fontsize=8, transform=ax.transAxes,

@@ -99,7 +99,9 @@ def view_polygons(r, vertices, view):
 
 
 def parse_section(text, r):
-    """'x=5', 'y=2.5' or 'z=1' -> (axis index, value)."""
+    """'x=5', 'y=2.5' or 'z=1' -> (axis index, value): the value the user
+    gave, in their coordinates, about the file's local origin as the
+    vertices are."""
     try:
         name, value = text.split("=")
         axis = "xyz".index(name.strip())
@@ -108,7 +110,7 @@ def parse_section(text, r):
             raise ValueError
     except ValueError:
         raise ValueError(f"--section {text}: give AXIS=VALUE, e.g. y=5 (a plane normal to x, y or z, m)")
-    return axis, value
+    return axis, value - r.origin[axis]
 
 
 def default_sections(vertices):
@@ -152,8 +154,10 @@ def section_polygons(r, vertices, axis, value):
     return polys, np.asarray(blocks, dtype=int)
 
 
-def section_title(axis, value):
-    return f"section {'xyz'[axis]} = {value:g} m"
+def section_title(axis, value, origin=(0.0, 0.0, 0.0)):
+    """`value` about the local origin; the title gives the user's coordinate."""
+    return f"section {'xyz'[axis]} = {value + origin[axis]:.15g} m" if origin[axis] else \
+        f"section {'xyz'[axis]} = {value:g} m"
 
 
 def section_labels(axis):

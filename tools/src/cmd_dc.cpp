@@ -38,8 +38,10 @@ void add_dc_command(CLI::App& app, const GlobalOptions& global) {
       if (opt->slivers.min_area || opt->slivers.max_aspect || opt->slivers.action)
         throw InputError("--min-area, --max-aspect and --slivers apply to 2D cuts; " + opt->input +
                          " is a 3D fractures file.");
-      const FractureModel fractures = read_fractures_h5(opt->input);
+      FractureModel fractures = read_fractures_h5(opt->input);
       check_coordinate_range(fractures, opt->input);
+      // A file written far from the origin without one (by hand, or another tool).
+      if (fractures.origin == Vec3::Zero()) move_to_local_origin(fractures);
       dc::Cut3dOptions options = cut3d_options_of(fractures);
       if (!opt->finite.empty())
         options.finite_fractures = opt->finite == "glue" ? dc::FiniteFractures::Glue : dc::FiniteFractures::Through;
@@ -52,8 +54,9 @@ void add_dc_command(CLI::App& app, const GlobalOptions& global) {
     }
     if (!opt->finite.empty())
       throw InputError("--finite-fractures applies to 3D cuts; " + opt->input + " is not a fractures file.");
-    const LineModel lines = read_lines_h5(opt->input);
+    LineModel lines = read_lines_h5(opt->input);
     check_coordinate_range(lines, opt->input);
+    if (lines.origin == Vec2::Zero()) move_to_local_origin(lines);
     dc::CutOptions options = cut_options_of(lines);
     apply(opt->slivers, options);
     const dc::CutResult cut = naming_input(opt->input, [&] { return dc::cut_blocks(lines, options); });

@@ -10,6 +10,7 @@
 
 #include "commands.hpp"
 #include "dda/common/atomic_file.hpp"
+#include "dda/common/coordinate_range.hpp"
 #include "dda/common/error.hpp"
 #include "dda/common/model_io.hpp"
 #include "dda/common/output_guard.hpp"
@@ -61,7 +62,9 @@ std::string points_csv(const df::Results& r, const std::vector<std::size_t>& whi
     put(out, r.histories[0][s].time);
     for (std::size_t p : which) {
       const df::MeasurementSample& m = r.histories[p][s];
-      for (double v : {m.position.x(), m.position.y(), m.displacement.x(), m.displacement.y(), m.velocity.x(),
+      // The file holds positions about the model's local origin; the user reads their own coordinates.
+      const Vec2 x = user_position(m.position, r.blocks.origin);
+      for (double v : {x.x(), x.y(), m.displacement.x(), m.displacement.y(), m.velocity.x(),
                        m.velocity.y(), m.stress[0], m.stress[1], m.stress[2]}) {
         out += ',';
         put(out, v);
@@ -145,7 +148,8 @@ std::string points_csv3(const df3::Results3& r, const std::vector<std::size_t>& 
     put(out, r.histories[0][s].time);
     for (std::size_t p : which) {
       const df3::MeasurementSample3& m = r.histories[p][s];
-      const Vec3 &x = m.position, &u = m.displacement, &v = m.velocity;
+      const Vec3 x = user_position(m.position, r.blocks.origin);  // the user's coordinates, as in 2D
+      const Vec3 &u = m.displacement, &v = m.velocity;
       put_all(out, {x.x(), x.y(), x.z(), u.x(), u.y(), u.z(), v.x(), v.y(), v.z()});
       put_all(out, {m.stress[0], m.stress[1], m.stress[2], m.stress[3], m.stress[4], m.stress[5]});
     }

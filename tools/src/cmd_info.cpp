@@ -1,4 +1,5 @@
 // dda info FILE.h5: what a file is and what made it.
+#include <charconv>
 #include <iostream>
 
 #include "commands.hpp"
@@ -18,6 +19,20 @@ void print_provenance(const Provenance& p) {
             << "scenario:        " << (p.scenario_path.empty() ? "(none)" : p.scenario_path) << "\n"
             << "seed:            " << p.seed << "\n";
 }
+// Positions in the file are about this origin (coordinate_range.hpp); said
+// only when it is not zero, to the last digit (every coordinate the user
+// reads back is position + origin).
+template <class Point>
+void print_origin(const Point& o) {
+  if (o == Point::Zero()) return;
+  std::cout << "local origin:    (";
+  for (int k = 0; k < o.size(); ++k) {
+    char buf[32];
+    const auto r = std::to_chars(buf, buf + sizeof buf, o[k]);
+    std::cout << (k ? ", " : "") << std::string(buf, r.ptr);
+  }
+  std::cout << ") m; positions in the file are about it\n";
+}
 }  // namespace
 
 void add_info_command(CLI::App& app, const GlobalOptions&) {
@@ -34,11 +49,13 @@ void add_info_command(CLI::App& app, const GlobalOptions&) {
                 << m.excavations.size() << " excavations, " << m.points.size() << " points, " << m.layers.size()
                 << " layers\n";
       print_provenance(m.provenance);
+      print_origin(m.origin);
       if (*show_scenario) std::cout << "\n" << m.provenance.scenario_text;
     } else if (format == "dda-blocks") {
       const BlockModel m = read_blocks_h5(*input);
       std::cout << *input << ": dda-blocks, " << m.blocks.size() << " blocks, " << m.points.size() << " points\n";
       print_provenance(m.provenance);
+      print_origin(m.origin);
       if (*show_scenario) std::cout << "\n" << m.provenance.scenario_text;
     } else if (format == "dda-fractures") {
       const FractureModel m = read_fractures_h5(*input);
@@ -46,12 +63,14 @@ void add_info_command(CLI::App& app, const GlobalOptions&) {
                 << " sets, " << m.excavations.size() << " excavations, " << m.points.size() << " points, "
                 << m.layers.size() << " layers\n";
       print_provenance(m.provenance);
+      print_origin(m.origin);
       if (*show_scenario) std::cout << "\n" << m.provenance.scenario_text;
     } else if (format == "dda-blocks3d") {
       const PolyhedronModel m = read_polyhedra_h5(*input);
       std::cout << *input << ": dda-blocks3d, " << m.bodies.size() << " bodies (" << m.blocks.size()
                 << " convex parts), " << m.points.size() << " points\n";
       print_provenance(m.provenance);
+      print_origin(m.origin);
       if (*show_scenario) std::cout << "\n" << m.provenance.scenario_text;
     } else if (format == "dda-results") {
       const df::Results r = df::read_results_h5(*input, df::ResultsParts::records());
@@ -63,6 +82,7 @@ void add_info_command(CLI::App& app, const GlobalOptions&) {
       std::cout << "energy:          " << energy_balance_line(r.energy, "J per m of thickness") << "\n";
       if (const std::string w = energy_created_warning(r.energy); !w.empty()) std::cout << "warning:         " << w << "\n";
       print_provenance(r.source.provenance);
+      print_origin(r.blocks.origin);
       if (*show_scenario) std::cout << "\n" << r.source.provenance.scenario_text;
     } else if (format == df3::kResults3dFormat) {
       const df3::Results3 r = df3::read_results3_h5(*input, df::ResultsParts::records());
@@ -81,6 +101,7 @@ void add_info_command(CLI::App& app, const GlobalOptions&) {
         if (const std::string w = energy_created_warning(r.energy); !w.empty()) std::cout << "warning:         " << w << "\n";
       }
       print_provenance(r.source.provenance);
+      print_origin(r.blocks.origin);
       if (*show_scenario) std::cout << "\n" << r.source.provenance.scenario_text;
     } else {
       throw InputError(*input + ": is not a file written by dda (no `format` attribute).");

@@ -37,7 +37,8 @@ void add_trace_command(CLI::App& app, const GlobalOptions& global) {
     refuse_overwriting_inputs({opt->input}, {opt->output, opt->vtk});
     const FractureModel model = read_fractures_h5(opt->input);
     const Vec3 point(opt->point[0], opt->point[1], opt->point[2]);
-    const dl::TraceFrame frame = dl::trace_frame(point, opt->dip, opt->dip_direction);
+    // The point is in the user's coordinates, the fractures about their local origin.
+    const dl::TraceFrame frame = dl::trace_frame(point - model.origin, opt->dip, opt->dip_direction);
     // Checked here so that the sentence names the file whose domain is missed.
     const dl::Polygon3 section = dl::plane_in_box(frame.n, frame.n.dot(frame.origin), model.domain);
     if (section.empty()) {

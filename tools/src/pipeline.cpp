@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "dda/common/atomic_file.hpp"
+#include "dda/common/coordinate_range.hpp"
 #include "dda/common/error.hpp"
 #include "dda/common/scenario.hpp"
 #include "dda/dl/generate.hpp"
@@ -25,6 +26,8 @@ DlOutcome run_dl(const std::string& input_path) {
   if (!std::filesystem::exists(input_path)) throw InputError(input_path + ": no such file.");
   if (has_extension(input_path, ".geo")) {
     DlOutcome out{dl::import_geo(input_path), nlohmann::json::object()};
+    check_coordinate_range(out.lines, input_path);
+    move_to_local_origin(out.lines);  // a .geo far from the origin is cut and run about a local one
     out.report["imported_from"] = input_path;
     out.report["lines"] = out.lines.lines.size();
     out.report["points"] = out.lines.points.size();

@@ -32,6 +32,7 @@ struct BlockModel {
   double bedding_dip_deg = 0;
   double domain_area = 0;               // area of the domain polygon, m^2
   double excavated_area = 0;            // area removed by excavations and hole points, m^2
+  Vec2 origin{0, 0};                    // local origin: user coordinates = position + origin (local_origin.hpp)
   Provenance provenance;
 };
 

@@ -67,6 +67,10 @@ struct FractureModel {
   // normal (bed_normal . x); empty if not layered.
   std::vector<Layer> layers;
   Vec3 bed_normal{0, 0, 1};
+  // Every position above is about this local origin: the user's coordinates
+  // are position + origin (local_origin.hpp); zero unless the model lies far
+  // from the origin for its size.
+  Vec3 origin{0, 0, 0};
   Provenance provenance;
 };
 

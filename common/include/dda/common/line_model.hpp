@@ -64,6 +64,10 @@ struct LineModel {
   std::vector<ModelPoint> points;
   std::vector<Layer> layers;          // bottom to top; empty if not layered
   double bedding_dip_deg = 0;         // dip of the beds (0 = horizontal)
+  // Every position above is about this local origin: the user's coordinates
+  // are position + origin (local_origin.hpp). (0, 0) unless the model lies
+  // far from the origin for its size.
+  Vec2 origin{0, 0};
   Provenance provenance;
 };
 

@@ -68,6 +68,7 @@ struct PolyhedronModel {
   double domain_volume = 0;
   double excavated_volume = 0;
   int unfinished_cuts = 0;          // finite fractures that ended inside a block (left it whole)
+  Vec3 origin{0, 0, 0};             // local origin: user coordinates = position + origin (local_origin.hpp)
   Provenance provenance;
 };
 

@@ -23,7 +23,12 @@ inline constexpr int kVtkPolyhedron = 42;
 
 class VtuGrid {
  public:
-  void add_point(const Vec2& p) { points_.insert(points_.end(), {p.x(), p.y(), 0.0}); }
+  VtuGrid() = default;
+  // Points given about a model's local origin (coordinate_range.hpp) are
+  // written at point + origin: ParaView shows the user's coordinates.
+  explicit VtuGrid(const Vec2& origin) : origin_(origin.x(), origin.y(), 0.0) {}
+  explicit VtuGrid(const Vec3& origin) : origin_(origin) {}
+  void add_point(const Vec2& p) { add_point(Vec3(p.x(), p.y(), 0.0)); }
   void add_point(const Vec3& p);
   // A cell over the last `n` points added (not for polyhedra).
   void add_cell(std::size_t n, int vtk_type);
@@ -52,6 +57,7 @@ class VtuGrid {
     int components = 1;
     std::variant<std::vector<double>, std::vector<std::int32_t>, std::vector<std::int64_t>> values;
   };
+  Vec3 origin_{0, 0, 0};
   std::vector<double> points_;
   std::vector<std::int64_t> connectivity_, offsets_;
   // Per cell, the end of its stream in faces_, -1 for cells without faces;

@@ -230,6 +230,7 @@ struct Model {
   std::vector<Vector6d> initial_velocity;   // one per block
   std::vector<Vector3d> initial_stress;     // one per block
   Control control;                          // w0 resolved
+  Vec2 origin{0, 0};                        // local origin of every position (BlockModel::origin)
   double search_distance = 0;               // m, 2.5 * g2 * w0
   // m, the open-close dead band (ContactLaw::tolerance): 1e-12 * w0, far
   // above the rounding of dn (1e-20 m on a 40 m model) and far below any

@@ -113,6 +113,7 @@ struct Model3 {
   std::vector<PointLoad3> loads;          // on free blocks
   std::vector<MeasurementPoint3> measurements;
   std::vector<Bolt3> bolts;               // rock bolts (bolts3d.hpp), blocks resolved
+  Vec3 origin{0, 0, 0};                   // local origin of every position (PolyhedronModel::origin)
   double contact_reach = 0.01;     // m: contacts with |dn0| <= reach are tracked
   double contact_merge = 1e-3;     // m: one pair's candidates closer than this are one contact (see detect_contacts3)
   // m: open-close band (as ContactLaw::tolerance in 2D). A locked contact

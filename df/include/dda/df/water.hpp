@@ -33,6 +33,13 @@ struct WaterTable {
   double level = 0;
   std::vector<Point> knots;
 
+  // The same table about a local origin `o` (coordinate_range.hpp): the
+  // level and every knot given in the user's coordinates, less o.
+  void move_to_origin(const Point& o) {
+    level -= o[dim - 1];
+    for (Point& k : knots) k -= o;
+  }
+
   // Head (m) above the horizontal position of p.
   double head(const Point& p) const;
   // gamma_w max(0, h - z), Pa.
