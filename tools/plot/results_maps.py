@@ -12,6 +12,7 @@ from matplotlib.colors import Normalize
 from matplotlib.lines import Line2D
 
 import results_views3d as v3
+from results_bolts import draw_bolts
 from results_quantities import block_quantity, readable_unit, shared_scale
 
 STATE_STYLE = {0: ("0.55", "open"), 1: ("#e66101", "sliding"), 2: ("#2c7bb6", "locked")}
@@ -97,6 +98,7 @@ def deformed_2d(r, frames, color_by, component, vectors):
         if vectors:
             arrows = draw_vectors(ax, r.block_means(verts), r.block_means(verts) - r.block_means(r.vertices0),
                                   plane_extent(verts))
+        draw_bolts(ax, r, k)
         finish_plane(ax, verts, "x (m)", "y (m)", time_label(r, k) + arrows)
         fig.colorbar(pc, ax=ax, label=label, shrink=0.85)
     fig.suptitle(f"Deformed blocks coloured by {quantities[0].label}", fontsize=11)
@@ -124,6 +126,7 @@ def deformed_3d(r, frames, color_by, component, vectors, looks):
                 means = r.block_means(verts)
                 du = means - r.block_means(r.vertices0)
                 arrows = draw_vectors(ax, view.project(means), view.project(du), plane_extent(screen))
+            draw_bolts(ax, r, k, view.project)  # on top of the blocks, seen through them
             xlabel, ylabel = view.axis_labels()
             finish_plane(ax, screen, xlabel, ylabel, f"{view.title}\n{time_label(r, k)}{arrows}")
         fig.colorbar(pc, ax=list(axes[row]), label=label, shrink=0.85)
