@@ -115,12 +115,12 @@ void observe_allowed_keys(std::function<void(const AllowedKeys&)> observer) {
   allowed_keys_observer = std::move(observer);
 }
 
-void YamlNode::allow(std::initializer_list<const char*> keys, std::source_location where) const {
-  allow(std::vector<std::string>(keys.begin(), keys.end()), where);
+void YamlNode::allow(std::initializer_list<const char*> keys, const char* file, int line) const {
+  allow(std::vector<std::string>(keys.begin(), keys.end()), file, line);
 }
 
-void YamlNode::allow(const std::vector<std::string>& keys, std::source_location where) const {
-  if (allowed_keys_observer) allowed_keys_observer({path_, keys, where.file_name(), static_cast<int>(where.line())});
+void YamlNode::allow(const std::vector<std::string>& keys, const char* file, int line) const {
+  if (allowed_keys_observer) allowed_keys_observer({path_, keys, file, line});
   if (!node_.IsMap()) fail("must be a mapping with keys " + join(keys, ", ") + ", got " + describe_scalar(node_));
   for (auto it = node_.begin(); it != node_.end(); ++it) {
     const std::string key = it->first.Scalar();

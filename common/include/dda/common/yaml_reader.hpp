@@ -20,7 +20,6 @@
 #include <initializer_list>
 #include <memory>
 #include <optional>
-#include <source_location>
 #include <string>
 #include <vector>
 
@@ -81,12 +80,14 @@ class YamlNode {
 
   // Declares the keys this mapping may hold; any other key is an error that
   // names it (and the closest allowed key, if one is close). Also checks that
-  // the node is a mapping. `where` is the reader's line that declares them
-  // (for observe_allowed_keys()).
-  void allow(std::initializer_list<const char*> keys,
-             std::source_location where = std::source_location::current()) const;
-  void allow(const std::vector<std::string>& keys,
-             std::source_location where = std::source_location::current()) const;
+  // the node is a mapping. `file` and `line` are the reader's that declares
+  // them (for observe_allowed_keys()); the defaults fill them in at the call
+  // (compiler builtins: clang 14, the sanitizer build's, has no
+  // std::source_location with libstdc++).
+  void allow(std::initializer_list<const char*> keys, const char* file = __builtin_FILE(),
+             int line = __builtin_LINE()) const;
+  void allow(const std::vector<std::string>& keys, const char* file = __builtin_FILE(),
+             int line = __builtin_LINE()) const;
   // Exactly one of `keys` must be present; returns it.
   std::string one_of(std::initializer_list<const char*> keys) const;
 
