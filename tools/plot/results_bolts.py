@@ -64,16 +64,21 @@ def read_bolts(r, f):
     if len(verts) != len(r.vertices0):
         raise ResultsError(f"{r.path}: /checkpoint/blocks/vertices does not match /model/blocks/vertices")
     ends = np.stack([anchor, head], axis=1)
-    blocks = np.array([[block_of(r, verts, p) for p in pair] for pair in ends], dtype=int)
+    lo = np.minimum.reduceat(verts, r.offsets[:-1], axis=0)
+    hi = np.maximum.reduceat(verts, r.offsets[:-1], axis=0)
+    blocks = np.array([[block_of(r, verts, lo, hi, p) for p in pair] for pair in ends], dtype=int)
     return Bolts(names, ends, blocks, verts, time, force, broken)
 
 
 # ---------------------------------------------------------------- geometry
 
-def block_of(r, vertices, p):
-    """The block `p` lies deepest in (or is nearest to) at `vertices`."""
+def block_of(r, vertices, lo, hi, p):
+    """The block `p` lies deepest in (or is nearest to) at `vertices`; only
+    the blocks whose box (lo, hi) holds p are looked at, all if none does."""
+    pad = 1e-9 * max(1.0, float(np.max(hi - lo)))
+    near = np.flatnonzero(np.all((lo - pad <= p) & (p <= hi + pad), axis=1))
     best, best_depth = -1, np.inf
-    for b in range(r.num_blocks):
+    for b in (near if len(near) else range(r.num_blocks)):
         depth = signed_distance_2d(r, vertices, b, p) if r.dim == 2 else signed_distance_3d(r, vertices, b, p)
         if depth < best_depth:
             best, best_depth = b, depth
