@@ -107,11 +107,20 @@ std::vector<std::string> YamlNode::keys() const {
   return out;
 }
 
-void YamlNode::allow(std::initializer_list<const char*> keys) const {
-  allow(std::vector<std::string>(keys.begin(), keys.end()));
+namespace {
+thread_local std::function<void(const AllowedKeys&)> allowed_keys_observer;
+}  // namespace
+
+void observe_allowed_keys(std::function<void(const AllowedKeys&)> observer) {
+  allowed_keys_observer = std::move(observer);
 }
 
-void YamlNode::allow(const std::vector<std::string>& keys) const {
+void YamlNode::allow(std::initializer_list<const char*> keys, const char* file, int line) const {
+  allow(std::vector<std::string>(keys.begin(), keys.end()), file, line);
+}
+
+void YamlNode::allow(const std::vector<std::string>& keys, const char* file, int line) const {
+  if (allowed_keys_observer) allowed_keys_observer({path_, keys, file, line});
   if (!node_.IsMap()) fail("must be a mapping with keys " + join(keys, ", ") + ", got " + describe_scalar(node_));
   for (auto it = node_.begin(); it != node_.end(); ++it) {
     const std::string key = it->first.Scalar();

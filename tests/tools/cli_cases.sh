@@ -1662,6 +1662,95 @@ case_report_html() {
   true
 }
 
+# Rock bolts in the VTK frames and the block figures (docs/formats.md,
+# docs/plots.md). 2D: the incline's slider tied to its slab by a bolt of
+# k = 1e5 N/m that breaks at 5000 N/m; the sliding slider stretches it
+# until it breaks (at t = 0.611 s in this run), between the frames at 0.5
+# and 0.75 s. 3D: the cube of df3_bolt.yaml on a weak bolt, which breaks
+# at T/6 = 0.053 s (case df3_bolt_run_history), between the frames at 0.05
+# and 0.1 s. Every frame's bolt file holds one line cell per bolt with the
+# force `dda history --bolts` prints for that time and the broken flag; the
+# figure draws each bolt between the ends the VTK file holds (the figure
+# carries them from the checkpoint with their blocks, the solver moved them
+# step by step), solid while intact and dashed once broken.
+case_bolts_in_vtk_and_plots() {
+  write_incline
+  /usr/bin/python3 - >> incline.yaml <<'PY'
+import math
+a = math.radians(30)
+r = lambda x, y: [round(math.cos(a) * x - math.sin(a) * y, 12), round(math.sin(a) * x + math.cos(a) * y, 12)]
+print("bolts:\n  - {name: b1, from: %s, to: %s, stiffness: 1.0e5, breaking_force: 5000}" % (r(6.5, 0.5), r(6.5, -0.5)))
+PY
+  "$DDA" run incline.yaml -o out -q --no-report || fail "run 2D"
+  "$DDA" history out/results.h5 --bolts > b2.csv || fail "history --bolts 2D"
+  cp "$SRC/tests/data/df3_bolt.yaml" . || fail "copy the fixture"
+  sed -e 's/stiffness: 1.0e7}/stiffness: 1.0e6, breaking_force: 12753}/' \
+      -e 's/control: {dt: 0.01, total_time: 0.2, output_interval: 0.1}/control: {dt: 0.001, total_time: 0.1, output_interval: 0.05, initial_equilibrium: false}/' \
+      -e 's/output: {vtk: false, plots: false, checkpoint_seconds: 0}/output: {vtk: true, plots: false, checkpoint_seconds: 0}/' \
+      df3_bolt.yaml > weak.yaml
+  grep -q "breaking_force: 12753" weak.yaml && grep -q "vtk: true" weak.yaml || fail "sed weak.yaml"
+  "$DDA" run weak.yaml -o out3 -q --no-report || fail "run 3D"
+  "$DDA" history out3/results.h5 --bolts > b3.csv || fail "history --bolts 3D"
+  PYTHONPATH="$SRC/tools/plot" /usr/bin/python3 - <<'PY' || fail "the bolts of the VTK frames or the figures are not the run's"
+import csv, glob
+import xml.etree.ElementTree as ET
+import h5py, numpy as np
+import matplotlib
+matplotlib.use("Agg")
+import results_figures as rf
+from results_data import read_results
+
+def vtu(path):
+    root = ET.parse(path).getroot()
+    piece = root.find(".//Piece")
+    arrays = {a.get("Name"): np.array(a.text.split(), dtype=float) for a in piece.iter("DataArray") if a.get("Name")}
+    points = np.array(piece.find("Points/DataArray").text.split(), dtype=float).reshape(-1, 3)
+    types = np.array(piece.find("Cells/DataArray[@Name='types']").text.split(), dtype=int)
+    return points, types, arrays
+
+def check(folder, history, dim):
+    rows = list(csv.DictReader(open(history)))
+    t_hist = np.array([float(r["t"]) for r in rows])
+    r = read_results(f"{folder}/results.h5", h5py)
+    pvd = open(f"{folder}/vtk/df.pvd").read()
+    states = []
+    for k, t in enumerate(r.frame_time):
+        name = "df_bolts_%05d.vtu" % k
+        assert name in pvd, name
+        points, types, a = vtu(f"{folder}/vtk/{name}")
+        assert list(types) == [3], types          # one VTK_LINE
+        row = rows[int(np.argmin(np.abs(t_hist - t)))]
+        assert abs(float(row["t"]) - t) < 1e-9, (row["t"], t)
+        f = float(row["b1.force"])
+        assert abs(a["axial_force"][0] - f) <= 1e-6 * max(1.0, abs(f)), (t, a["axial_force"][0], f)
+        assert int(a["broken"][0]) == int(row["b1.broken"]), (t, a["broken"][0], row["b1.broken"])
+        states.append(int(a["broken"][0]))
+        # The figure's bolt at this frame: the ends the VTK holds, the style its state.
+        fig, _ = rf.draw(r, "blocks", rf.FigureOptions(times=[t], looks=["north"] if dim == 3 else None))
+        ax = fig.axes[0]
+        drawn = [l for l in ax.lines if len(l.get_xdata()) == 2]
+        assert len(drawn) == 1, len(drawn)
+        ends = np.column_stack([drawn[0].get_xdata(), drawn[0].get_ydata()])
+        want = points[:, :2] if dim == 2 else points[:, [0, 2]]  # 3D looking north: x to the right, z up
+        assert np.allclose(ends, want, atol=1e-9), (t, ends, want)
+        assert (drawn[0].get_linestyle() == "-") == (a["broken"][0] == 0), drawn[0].get_linestyle()
+        rf.close(fig)
+    assert states[0] == 0 and states[-1] == 1 and states == sorted(states), states
+    print(folder, "bolt states by frame", states)
+
+check("out", "b2.csv", 2)
+check("out3", "b3.csv", 3)
+PY
+  "$DDA" plot out/results.h5 -o figs -q || fail "plot the 2D run with a bolt"
+  "$DDA" plot out3/results.h5 -o figs3 -q || fail "plot the 3D run with a bolt"
+  every_png figs blocks
+  every_png figs3 blocks
+  "$DDA" report out -o rep -q || fail "report of the 2D run with a bolt"
+  check_report rep/report.html 2
+  grep -q "Rock bolts: solid while intact, dashed red once broken" rep/report.html \
+    || fail "the report's block figure does not say how the bolts are drawn"
+}
+
 
 # ---------------------------------------------------------------- studies
 # (dda study, docs/studies.md)

@@ -69,6 +69,8 @@ def build(r):
     for kind in rf.kinds_of(r):
         fig, note = rf.draw(r, kind, rf.FigureOptions())
         caption = CAPTIONS["blocks3d" if kind == "blocks" and r.dim == 3 else kind]
+        if kind == "blocks" and r.bolts:
+            caption += " Rock bolts: solid while intact, dashed red once broken."
         figures.append(page.figure(png_of(fig), kind, caption))
         rf.close(fig)
         if note:

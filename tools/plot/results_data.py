@@ -67,6 +67,8 @@ class Results:
         self._read_steps()
         self._read_energy()
         self.contacts = self._read_contacts()
+        from results_bolts import read_bolts  # here: results_bolts uses this module's ResultsError
+        self.bolts = read_bolts(self, f)
         del self._f
 
     # ------------------------------------------------------------ helpers

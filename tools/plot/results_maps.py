@@ -13,6 +13,7 @@ from matplotlib.lines import Line2D
 
 import results_views3d as v3
 from plot_io import label_user_coordinates
+from results_bolts import draw_bolts
 from results_quantities import block_quantity, readable_unit, shared_scale
 
 STATE_STYLE = {0: ("0.55", "open"), 1: ("#e66101", "sliding"), 2: ("#2c7bb6", "locked")}
@@ -98,6 +99,7 @@ def deformed_2d(r, frames, color_by, component, vectors):
         if vectors:
             arrows = draw_vectors(ax, r.block_means(verts), r.block_means(verts) - r.block_means(r.vertices0),
                                   plane_extent(verts))
+        draw_bolts(ax, r, k)
         finish_plane(ax, verts, "x (m)", "y (m)", time_label(r, k) + arrows)
         label_user_coordinates((ax.xaxis, ax.yaxis), r.origin)
         fig.colorbar(pc, ax=ax, label=label, shrink=0.85)
@@ -126,6 +128,7 @@ def deformed_3d(r, frames, color_by, component, vectors, looks):
                 means = r.block_means(verts)
                 du = means - r.block_means(r.vertices0)
                 arrows = draw_vectors(ax, view.project(means), view.project(du), plane_extent(screen))
+            draw_bolts(ax, r, k, view.project)  # on top of the blocks, seen through them
             xlabel, ylabel = view.axis_labels()
             finish_plane(ax, screen, xlabel, ylabel, f"{view.title}\n{time_label(r, k)}{arrows}")
             label_user_coordinates((ax.xaxis, ax.yaxis), view.project(r.origin))

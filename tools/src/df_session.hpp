@@ -16,6 +16,7 @@
 
 #include "commands.hpp"
 #include "dda/common/yaml_reader.hpp"
+#include "dda/df/bolts_vtk.hpp"
 #include "dda/df/damping.hpp"
 #include "dda/df/energy.hpp"
 #include "dda/df/results.hpp"
@@ -89,10 +90,11 @@ class InterruptGuard {
   void (*old_term_)(int);
 };
 
-// df_blocks_00012.vtu, df_contacts_00012.vtu.
+// df_blocks_00012.vtu, df_contacts_00012.vtu, df_bolts_00012.vtu.
 std::string frame_name(const char* kind, std::size_t frame);
-// df.pvd in `dir` listing the blocks (and contacts) frame files at `times`.
-void write_pvd_series(const std::filesystem::path& dir, const std::vector<double>& times, bool contacts);
+// df.pvd in `dir` listing the blocks (and contacts, and bolts) frame files at `times`.
+void write_pvd_series(const std::filesystem::path& dir, const std::vector<double>& times, bool contacts,
+                      bool bolts);
 
 // The runaway as the one sentence `dda` ends with, saying where the results are.
 [[noreturn]] void throw_runaway(const df::RunawayError& e, const std::string& results_path);
@@ -245,12 +247,17 @@ void run_session(Sim& sim, Results& results, const OutputOptions& output, const 
   if (!stage.vtk_dir.empty()) {
     make_dir(vtk);
     const bool contacts = output.vtk_contacts;
-    rc.on_frame = [&results, vtk, contacts, write_frame](const Sim& s, std::size_t frame) {
+    const bool bolts = !sim.bolts().empty();
+    rc.on_frame = [&results, vtk, contacts, bolts, write_frame](const Sim& s, std::size_t frame) {
       write_frame(s, (vtk / frame_name("blocks", frame)).string(),
                   contacts ? (vtk / frame_name("contacts", frame)).string() : std::string());
+      // The bolts of the frame (df/bolts_vtk.hpp), one overload per dimension.
+      using df::write_bolts_vtu;
+      using df3::write_bolts_vtu;
+      if (bolts) write_bolts_vtu((vtk / frame_name("bolts", frame)).string(), s);
       std::vector<double> times;
       for (const auto& f : results.frames) times.push_back(f.time);
-      write_pvd_series(vtk, times, contacts);
+      write_pvd_series(vtk, times, contacts, bolts);
     };
   }
   const auto& control = sim.model().control;

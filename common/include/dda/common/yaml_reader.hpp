@@ -16,6 +16,7 @@
 // first value and ignore the rest; docs/reliability.md).
 #include <yaml-cpp/yaml.h>
 
+#include <functional>
 #include <initializer_list>
 #include <memory>
 #include <optional>
@@ -38,6 +39,21 @@ struct Range {
   bool contains(double v) const;
   std::string describe() const;  // e.g. "> 0", "between 0 and 1"
 };
+
+// What one allow() call declared: the mapping's key path, the keys it
+// allows, and the source file and line of the reader that declared them.
+struct AllowedKeys {
+  std::string path;
+  std::vector<std::string> keys;
+  std::string file;
+  int line = 0;
+};
+
+// Hears every allow() call of this thread from now on (an empty function:
+// none, the default). The readers keep their keys next to the code that
+// reads them; this is how the check that every scenario key is documented
+// (tests/df/test_scenario_keys_documented.cpp) collects them.
+void observe_allowed_keys(std::function<void(const AllowedKeys&)> observer);
 
 class YamlNode {
  public:
@@ -64,9 +80,14 @@ class YamlNode {
 
   // Declares the keys this mapping may hold; any other key is an error that
   // names it (and the closest allowed key, if one is close). Also checks that
-  // the node is a mapping.
-  void allow(std::initializer_list<const char*> keys) const;
-  void allow(const std::vector<std::string>& keys) const;
+  // the node is a mapping. `file` and `line` are the reader's that declares
+  // them (for observe_allowed_keys()); the defaults fill them in at the call
+  // (compiler builtins: clang 14, the sanitizer build's, has no
+  // std::source_location with libstdc++).
+  void allow(std::initializer_list<const char*> keys, const char* file = __builtin_FILE(),
+             int line = __builtin_LINE()) const;
+  void allow(const std::vector<std::string>& keys, const char* file = __builtin_FILE(),
+             int line = __builtin_LINE()) const;
   // Exactly one of `keys` must be present; returns it.
   std::string one_of(std::initializer_list<const char*> keys) const;
 
