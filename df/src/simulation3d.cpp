@@ -4,6 +4,7 @@
 
 #include "contact_coupling3.hpp"
 #include "simulation3d_assembly.hpp"
+#include "step_control.hpp"
 #include "water_faces.hpp"
 #include "dda/common/error.hpp"
 #include "dda/df/runaway.hpp"
@@ -400,12 +401,11 @@ StepInfo3 Simulation3::advance(double max_dt) {
   detect();
   start_contacts_ = contacts_;  // into the storage of the last step's copy
   const std::vector<Contact3>& start = start_contacts_;
-  const double dt_min = ctl.min_dt_ratio * ctl.dt;
-  const double limit = ctl.max_displacement_ratio * w0_;
+  const df::StepControl rule(ctl.dt, ctl.min_dt_ratio * ctl.dt, ctl.max_displacement_ratio * w0_);
   int cuts = 0;
   for (;;) {
-    const bool shortened = max_dt < dt_;
-    const double dt = std::min(dt_, max_dt);
+    const df::StepControl::Try attempt = df::StepControl::next_try(dt_, max_dt);
+    const double dt = attempt.dt;
     contacts_ = start;
     std::vector<Vector12d> d;
     int iterations = 0;
@@ -417,15 +417,12 @@ StepInfo3 Simulation3::advance(double max_dt) {
       contacts_ = start;
       throw;
     }
-    const bool too_far = moved > limit;
-    if ((!settled || too_far) && dt > dt_min * (1 + 1e-9)) {
-      // Redo with a smaller step: to what the displacement limit allows, or
-      // by 3 when the contact states did not settle (the 2D rule).
-      dt_ = std::max(dt_min, dt * (too_far ? std::min(0.5, 0.9 * limit / moved) : 1.0 / 3.0));
+    if (const std::optional<double> shorter = rule.redo_dt(settled, moved, dt)) {
+      dt_ = *shorter;
       ++cuts;
       continue;
     }
-    if (too_far && moved > 2 * w0_) {
+    if (rule.too_far(moved) && moved > 2 * w0_) {
       contacts_ = start;  // the state before the step, for the checkpoint written after this
       throw df::RunawayError("Step " + std::to_string(log_.size() + 1) + " at t = " + std::to_string(time_) +
                                  " s: a block moves " + std::to_string(moved) +
@@ -434,8 +431,7 @@ StepInfo3 Simulation3::advance(double max_dt) {
                              static_cast<int>(log_.size()) + 1, time_, -1);
     }
     const StepInfo3 info = record(dt, d, moved, iterations, settled, cuts);
-    // Easy steps let dt grow back gradually toward the user's dt.
-    if (!shortened && cuts == 0) dt_ = std::min(ctl.dt, dt_ * 1.1);
+    dt_ = rule.after_step(dt_, attempt.shortened, cuts);
     return info;
   }
 }
