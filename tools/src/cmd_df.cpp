@@ -40,8 +40,6 @@ struct Df2 {
   static Results read_results(const std::string& path) { return df::read_results_h5(path); }
   static DfJob<Df2> job_from_saved(const Results& saved);
   static df::Model model_of(const DfJob<Df2>& job);
-  static void write_frame(const Simulation& s, const Results& results, const std::string& blocks,
-                          const std::string& contacts);
 };
 using Job = DfJob<Df2>;
 
@@ -87,11 +85,6 @@ Job Df2::job_from_saved(const Results& saved) {
 // problem of its two files, and says which.
 df::Model Df2::model_of(const Job& job) {
   return naming_input(job.input_files, [&] { return df::build_model(job.scenario.input); });
-}
-
-void Df2::write_frame(const Simulation& s, const Results&, const std::string& blocks, const std::string& contacts) {
-  df::write_blocks_frame_vtu(blocks, s);
-  if (!contacts.empty()) df::write_contacts_vtu(contacts, s);
 }
 
 }  // namespace

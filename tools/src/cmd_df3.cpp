@@ -20,11 +20,6 @@ struct Df3 {
   static Results read_results(const std::string& path) { return df3::read_results3_h5(path); }
   static DfJob<Df3> job_from_saved(const Results& saved);
   static const df3::Model3& model_of(const DfJob<Df3>& job) { return job.scenario.model; }
-  static void write_frame(const Simulation& s, const Results& results, const std::string& blocks,
-                          const std::string& contacts) {
-    df3::write_blocks3_frame_vtu(blocks, s, results.blocks.blocks);
-    if (!contacts.empty()) df3::write_contacts3_vtu(contacts, s);
-  }
 };
 using Job3 = DfJob<Df3>;
 

@@ -10,7 +10,7 @@
 //   static DfJob<Dim> job_from_saved(const Results& saved);  the saved run's job, read again from
 //                                                            the scenario stored in the file
 //   static <model> model_of(const DfJob<Dim>& job);          what the Simulation is built from
-//   static void write_frame(const Simulation&, const Results&, blocks_vtu, contacts_vtu or "");
+// (what a run writes is df_outputs.hpp's, through the dimension's hooks).
 #include <optional>
 #include <string>
 #include <utility>
@@ -52,10 +52,7 @@ template <class Dim>
 void execute_job(DfJob<Dim>& job, const DfStage& stage, std::optional<typename Dim::State> resume_from) {
   typename Dim::Simulation sim(Dim::model_of(job));
   if (resume_from) sim.restore(*resume_from);
-  run_session(sim, job.results, job.output, stage,
-              [&job](const typename Dim::Simulation& s, const std::string& blocks, const std::string& contacts) {
-                Dim::write_frame(s, job.results, blocks, contacts);
-              });
+  run_session(sim, job.results, job.output, stage);
 }
 
 // `dda df --resume path`: continues the run saved in `path` from its
