@@ -87,7 +87,9 @@ Simulation3::Simulation3(Model3 model)
       coupling_(std::make_unique<ContactCoupling3>()) {
   const size_t n = model_.blocks.size();
   if (model_.fixed.empty()) model_.fixed.assign(n, false);
-  if (model_.fixed.size() != n) throw std::invalid_argument("Model3: fixed must have one entry per block");
+  if (model_.fixed.size() != n)
+    throw InputError("The 3D fixed-block list has " + std::to_string(model_.fixed.size()) + " entries for " +
+                     std::to_string(n) + " blocks.");
   for (size_t b = 0; b < n; ++b) {
     refresh_geometry(model_.blocks[b]);
     dof_.push_back(model_.fixed[b] ? -1 : n_dofs_);
@@ -96,7 +98,7 @@ Simulation3::Simulation3(Model3 model)
   set_initial_state();
   known_.assign(n, Vector12d::Zero());
   if (model_.earthquake.motion && !model_.earthquake.mode)
-    throw std::invalid_argument("Model3: an earthquake needs its mode (loading or displacement)");
+    throw InputError("The 3D earthquake has no mode: give loading, displacement or incident.");
   make_friction_laws();
   index_points();
   start_bolts();
