@@ -12,9 +12,11 @@
 namespace dda::df {
 namespace {
 
-template <int dim>
-void write_bolt_lines(const std::string& path, const std::vector<BoltStateOf<dim>>& bolts) {
-  VtuGrid g;
+// `origin`: the model's local origin, so that the bolts line up with the
+// blocks in the user's coordinates (results_vtk.cpp does the same).
+template <int dim, class Origin>
+void write_bolt_lines(const std::string& path, const std::vector<BoltStateOf<dim>>& bolts, const Origin& origin) {
+  VtuGrid g(origin);
   std::vector<std::int32_t> id, broken;
   std::vector<double> force, length;
   for (std::size_t k = 0; k < bolts.size(); ++k) {
@@ -37,14 +39,16 @@ void write_bolt_lines(const std::string& path, const std::vector<BoltStateOf<dim
 
 }  // namespace
 
-void write_bolts_vtu(const std::string& path, const Simulation& sim) { write_bolt_lines<2>(path, sim.bolts()); }
+void write_bolts_vtu(const std::string& path, const Simulation& sim) {
+  write_bolt_lines<2>(path, sim.bolts(), sim.model().origin);
+}
 
 }  // namespace dda::df
 
 namespace dda::df3 {
 
 void write_bolts_vtu(const std::string& path, const Simulation3& sim) {
-  df::write_bolt_lines<3>(path, sim.bolts());
+  df::write_bolt_lines<3>(path, sim.bolts(), sim.model().origin);
 }
 
 }  // namespace dda::df3

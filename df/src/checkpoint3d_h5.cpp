@@ -9,12 +9,16 @@
 #include <string>
 
 #include "bolts_h5.hpp"
+#include "checkpoint_common.hpp"
 #include "results_h5_util.hpp"
 
 namespace dda::df3 {
 namespace {
 
+using df::h5io::checkpoint_table;
+using df::h5io::contact_ints;
 using df::h5io::flat;
+using df::h5io::read_points3;
 using df::h5io::rows_of;
 
 // One row of `width` numbers per contact.
@@ -29,30 +33,6 @@ std::vector<double> rows(const std::vector<Contact3>& cs, int width, Get get) {
   return out;
 }
 
-template <class Get>
-std::vector<std::int32_t> ints(const std::vector<Contact3>& cs, Get get) {
-  std::vector<std::int32_t> out;
-  for (const Contact3& c : cs) out.push_back(static_cast<std::int32_t>(get(c)));
-  return out;
-}
-
-std::vector<double> table(const h5::Reader& r, const std::string& name, std::size_t n, std::size_t cols) {
-  const h5::Array<double> a = r.f64(name);
-  const bool ok = cols == 1 ? a.dims == std::vector<hsize_t>{n} : a.dims == std::vector<hsize_t>{n, cols};
-  if (!ok)
-    r.fail("dataset " + name + " must have shape (" + std::to_string(n) + (cols == 1 ? ",)" : ", " + std::to_string(cols) + ")") +
-           " for this model");
-  return a.data;
-}
-
-std::vector<Vec3> points(const h5::Reader& r, const std::string& name) {
-  const std::size_t n = rows_of(r, name);
-  const std::vector<double> v = table(r, name, n, 3);
-  std::vector<Vec3> out;
-  for (std::size_t i = 0; i < n; ++i) out.emplace_back(v[3 * i], v[3 * i + 1], v[3 * i + 2]);
-  return out;
-}
-
 Vec3 row3(const std::vector<double>& v, std::size_t k) { return {v[3 * k], v[3 * k + 1], v[3 * k + 2]}; }
 Eigen::Vector2d row2(const std::vector<double>& v, std::size_t k) { return {v[2 * k], v[2 * k + 1]}; }
 
@@ -60,10 +40,7 @@ Eigen::Vector2d row2(const std::vector<double>& v, std::size_t k) { return {v[2 
 
 void write_checkpoint3(h5::Writer& w, const Simulation3State& s) {
   h5::Id g = w.group("checkpoint");
-  w.attr_f64(g.get(), "time", s.time);
-  w.attr_f64(g.get(), "dt", s.dt);
-  w.attr_i32(g.get(), "step_count", static_cast<std::int32_t>(s.log.size()));
-  w.attr_i32(g.get(), "started", s.started ? 1 : 0);
+  df::h5io::write_checkpoint_clock(w, g.get(), s.time, s.dt, static_cast<int>(s.log.size()), s.started);
   w.attr_i32(g.get(), "bonds_placed", s.bonds_placed ? 1 : 0);
   w.attr_text(g.get(), "description",
               "complete 3D simulation state after step step_count; with /steps (the log) and /series (the "
@@ -86,17 +63,17 @@ void write_checkpoint3(h5::Writer& w, const Simulation3State& s) {
   const hsize_t nc = cs.size();
   h5::Id cg = df::h5io::subgroup(g.get(), "contacts");
   const hid_t c = cg.get();
-  w.i32(c, "i", ints(cs, [](const Contact3& x) { return x.i; }), "", "block i (its vertex or first edge)");
-  w.i32(c, "j", ints(cs, [](const Contact3& x) { return x.j; }), "", "block j (its face or second edge)");
-  w.i32(c, "kind", ints(cs, [](const Contact3& x) { return static_cast<int>(x.kind); }), "",
+  w.i32(c, "i", contact_ints(cs, [](const Contact3& x) { return x.i; }), "", "block i (its vertex or first edge)");
+  w.i32(c, "j", contact_ints(cs, [](const Contact3& x) { return x.j; }), "", "block j (its face or second edge)");
+  w.i32(c, "kind", contact_ints(cs, [](const Contact3& x) { return static_cast<int>(x.kind); }), "",
         "0 vertex-face, 1 edge-edge");
   std::vector<std::int32_t> ids;
   for (const Contact3& x : cs) ids.insert(ids.end(), x.ids, x.ids + 4);
   w.i32(c, "ids", ids, "",
         "4 per contact, row-major: vertex-face: vertex of i, face of j, -1, -1; edge-edge: edge of i, edge of j");
-  w.i32(c, "state", ints(cs, [](const Contact3& x) { return static_cast<int>(x.state); }), "",
+  w.i32(c, "state", contact_ints(cs, [](const Contact3& x) { return static_cast<int>(x.state); }), "",
         "0 open, 1 sliding, 2 locked");
-  w.i32(c, "joint", ints(cs, [](const Contact3& x) { return x.joint; }), "", "joint index (joint sets, then default)");
+  w.i32(c, "joint", contact_ints(cs, [](const Contact3& x) { return x.joint; }), "", "joint index (joint sets, then default)");
   auto vec3 = [&](const char* name, auto get, const char* units, const char* what) {
     w.f64(c, name, rows(cs, 3, get), {nc, 3}, units, what);
   };
@@ -104,14 +81,14 @@ void write_checkpoint3(h5::Writer& w, const Simulation3State& s) {
     w.f64(c, name, rows(cs, 2, get), {nc, 2}, units, what);
   };
   auto one = [&](const char* name, auto get, const char* units, const char* what) {
-    w.f64(c, name, rows(cs, 1, [&](const Contact3& x) { return std::array<double, 1>{get(x)}; }), {nc}, units, what);
+    w.f64(c, name, df::h5io::contact_reals(cs, get), {nc}, units, what);
   };
   vec3("ref_j", [](const Contact3& x) { return x.ref_j; }, "m", "shear-spring anchor on block j");
   vec3("point_now", [](const Contact3& x) { return x.point_now; }, "m", "the contact point carried with block i");
   vec2("slip_dir", [](const Contact3& x) { return x.slip_dir; }, "1", "unit slip direction on (t1, t2) while sliding");
   vec2("slip", [](const Contact3& x) { return x.slip; }, "m", "slip of i relative to j in the last iterate (t1, t2)");
   one("normal_force", [](const Contact3& x) { return x.normal_force; }, "N", "compression positive");
-  w.i32(c, "bonded", ints(cs, [](const Contact3& x) { return x.bonded ? 1 : 0; }), "", "1: the joint's bond is intact");
+  w.i32(c, "bonded", contact_ints(cs, [](const Contact3& x) { return x.bonded ? 1 : 0; }), "", "1: the joint's bond is intact");
   one("bond_area", [](const Contact3& x) { return x.bond_area; }, "m^2", "share of the face-to-face patch bonded");
   vec2("shear_force", [](const Contact3& x) { return x.shear_force; }, "N", "shear force on i (t1, t2)");
   one("strength", [](const Contact3& x) { return x.strength; }, "N", "the friction law's shear strength");
@@ -122,18 +99,10 @@ void write_checkpoint3(h5::Writer& w, const Simulation3State& s) {
   vec3("t2", [](const Contact3& x) { return x.geo.t2; }, "1", "second tangent (geometry)");
   vec3("point_i", [](const Contact3& x) { return x.geo.point_i; }, "m", "contact point on i (geometry)");
   vec3("point_j", [](const Contact3& x) { return x.geo.point_j; }, "m", "contact point on j (geometry)");
-  {  // the friction law's memory (FrictionState::to_vector), ragged
-    std::vector<double> all;
-    std::vector<std::int32_t> count;
-    for (const Contact3& x : cs) {
-      const std::vector<double> v = x.friction.to_vector();
-      all.insert(all.end(), v.begin(), v.end());
-      count.push_back(static_cast<std::int32_t>(v.size()));
-    }
-    w.i32(c, "friction_count", count, "", "number of friction-state values of each contact (in friction)");
-    w.f64(c, "friction", all, {all.size()}, "",
-          "friction state of all contacts in contact order (theta, slip, then law-specific values)");
-  }
+  // the friction law's memory (FrictionState::to_vector), ragged
+  df::h5io::write_ragged(w, c, cs, [](const Contact3& x) { return x.friction.to_vector(); }, "friction_count",
+                         "number of friction-state values of each contact (in friction)", "friction",
+                         "friction state of all contacts in contact order (theta, slip, then law-specific values)");
 
   h5::Id pg = df::h5io::subgroup(g.get(), "points");
   w.f64(pg.get(), "fixed_position", flat(s.fixed_at), {s.fixed_at.size(), 3}, "m", "where each fixed point is now");
@@ -145,27 +114,21 @@ void write_checkpoint3(h5::Writer& w, const Simulation3State& s) {
 }
 
 Simulation3State read_checkpoint3(const h5::Reader& r, const std::vector<std::size_t>& vertex_counts) {
-  if (!r.exists("/checkpoint")) r.fail("has no /checkpoint group, so the run cannot be resumed");
-  h5::Id g(H5Gopen2(r.file(), "/checkpoint", H5P_DEFAULT), H5Gclose);
-  if (!g.valid()) r.fail("/checkpoint is not a group");
-  const auto time = r.attr_f64(g.get(), "time", "/checkpoint");
-  const auto dt = r.attr_f64(g.get(), "dt", "/checkpoint");
-  if (!time || !dt) r.fail("/checkpoint lacks one of its attributes time, dt");
+  const df::h5io::CheckpointClock clock = df::h5io::read_checkpoint_clock(r, false);
   Simulation3State s;
-  s.time = *time;
-  s.dt = *dt;
-  // Files written before the attribute existed come from runs that had no
-  // initial equilibrium to make: they have started.
-  s.started = r.attr_int(g.get(), "started", "/checkpoint").value_or(1) != 0;
+  s.time = clock.time;
+  s.dt = clock.dt;
+  s.started = clock.started;
+  h5::Id g(H5Gopen2(r.file(), "/checkpoint", H5P_DEFAULT), H5Gclose);
   // Files written before bonds had none to place.
   s.bonds_placed = r.attr_int(g.get(), "bonds_placed", "/checkpoint").value_or(1) != 0;
 
   const std::size_t nb = vertex_counts.size();
   std::size_t nv = 0;
   for (const std::size_t n : vertex_counts) nv += n;
-  const std::vector<double> verts = table(r, "/checkpoint/blocks/vertices", nv, 3);
-  const std::vector<double> vel = table(r, "/checkpoint/blocks/velocity", nb, kDofs);
-  const std::vector<double> stress = table(r, "/checkpoint/blocks/stress", nb, 6);
+  const std::vector<double> verts = checkpoint_table(r, "/checkpoint/blocks/vertices", nv, 3);
+  const std::vector<double> vel = checkpoint_table(r, "/checkpoint/blocks/velocity", nb, kDofs);
+  const std::vector<double> stress = checkpoint_table(r, "/checkpoint/blocks/stress", nb, 6);
   std::size_t at = 0;
   for (std::size_t b = 0; b < nb; ++b) {
     std::vector<Vec3> v;
@@ -184,19 +147,19 @@ Simulation3State read_checkpoint3(const h5::Reader& r, const std::vector<std::si
   };
   const auto ci = ivec("i", 1), cj = ivec("j", 1), kind = ivec("kind", 1), ids = ivec("ids", 4),
              state = ivec("state", 1), joint = ivec("joint", 1), fcount = ivec("friction_count", 1);
-  const auto ref_j = table(r, c + "ref_j", nc, 3), point_now = table(r, c + "point_now", nc, 3),
-             slip_dir = table(r, c + "slip_dir", nc, 2), slip = table(r, c + "slip", nc, 2),
-             normal_force = table(r, c + "normal_force", nc, 1), shear = table(r, c + "shear_force", nc, 2),
-             strength = table(r, c + "strength", nc, 1), slip_velocity = table(r, c + "slip_velocity", nc, 1),
-             slip_axis = table(r, c + "slip_axis", nc, 3), normal = table(r, c + "normal", nc, 3),
-             t1 = table(r, c + "t1", nc, 3), t2 = table(r, c + "t2", nc, 3), pi = table(r, c + "point_i", nc, 3),
-             pj = table(r, c + "point_j", nc, 3);
-  const std::vector<double> friction = r.f64(c + "friction").data;
+  const auto ref_j = checkpoint_table(r, c + "ref_j", nc, 3), point_now = checkpoint_table(r, c + "point_now", nc, 3),
+             slip_dir = checkpoint_table(r, c + "slip_dir", nc, 2), slip = checkpoint_table(r, c + "slip", nc, 2),
+             normal_force = checkpoint_table(r, c + "normal_force", nc, 1), shear = checkpoint_table(r, c + "shear_force", nc, 2),
+             strength = checkpoint_table(r, c + "strength", nc, 1), slip_velocity = checkpoint_table(r, c + "slip_velocity", nc, 1),
+             slip_axis = checkpoint_table(r, c + "slip_axis", nc, 3), normal = checkpoint_table(r, c + "normal", nc, 3),
+             t1 = checkpoint_table(r, c + "t1", nc, 3), t2 = checkpoint_table(r, c + "t2", nc, 3), pi = checkpoint_table(r, c + "point_i", nc, 3),
+             pj = checkpoint_table(r, c + "point_j", nc, 3);
+  std::vector<std::vector<double>> friction =
+      df::h5io::read_ragged(r, c, fcount, "friction_count", "friction", 2);  // at least theta and slip
   // Bonds: none in files written before them.
   const bool has_bonds = r.exists(c + "bonded");
   const auto bonded = has_bonds ? ivec("bonded", 1) : std::vector<std::int64_t>(nc, 0);
-  const auto bond_area = has_bonds ? table(r, c + "bond_area", nc, 1) : std::vector<double>(nc, 0.0);
-  std::size_t fpos = 0;
+  const auto bond_area = has_bonds ? checkpoint_table(r, c + "bond_area", nc, 1) : std::vector<double>(nc, 0.0);
   for (std::size_t k = 0; k < nc; ++k) {
     Contact3 x;
     x.i = static_cast<int>(ci[k]);
@@ -223,18 +186,13 @@ Simulation3State read_checkpoint3(const h5::Reader& r, const std::vector<std::si
     x.geo.t2 = row3(t2, k);
     x.geo.point_i = row3(pi, k);
     x.geo.point_j = row3(pj, k);
-    if (fcount[k] < 2 || fpos + static_cast<std::size_t>(fcount[k]) > friction.size())
-      r.fail("dataset " + c + "friction holds fewer values than friction_count asks for");
-    x.friction = df::FrictionState::from_vector(
-        std::vector<double>(friction.begin() + static_cast<long>(fpos), friction.begin() + static_cast<long>(fpos + fcount[k])));
-    fpos += static_cast<std::size_t>(fcount[k]);
+    x.friction = df::FrictionState::from_vector(std::move(friction[k]));
     s.contacts.push_back(std::move(x));
   }
-  if (fpos != friction.size()) r.fail("dataset " + c + "friction holds more values than friction_count");
 
-  s.fixed_at = points(r, "/checkpoint/points/fixed_position");
-  s.load_at = points(r, "/checkpoint/points/load_position");
-  s.measure_at = points(r, "/checkpoint/points/measurement_position");
+  s.fixed_at = read_points3(r, "/checkpoint/points/fixed_position");
+  s.load_at = read_points3(r, "/checkpoint/points/load_position");
+  s.measure_at = read_points3(r, "/checkpoint/points/measurement_position");
   s.solver_warm_start = df::h5io::read_warm_start(r, "/checkpoint");
   if (r.exists("/checkpoint/bolts")) s.bolts = df::h5io::read_bolt_states<3>(r, "/checkpoint/bolts/");
   return s;

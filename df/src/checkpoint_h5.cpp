@@ -3,53 +3,29 @@
 // step count. Everything is float64 or int32, so it reads back bit for bit.
 #include "checkpoint_h5.hpp"
 
-#include "bolts_h5.hpp"
-
 #include <cstdint>
 #include <string>
 
+#include "bolts_h5.hpp"
+#include "checkpoint_common.hpp"
 #include "dda/df/block_kinematics.hpp"
 #include "results_h5_util.hpp"
 
 namespace dda::df {
 namespace {
 
+using h5io::checkpoint_table;
+using h5io::contact_ints;
+using h5io::contact_reals;
 using h5io::flat;
+using h5io::read_points2;
 using h5io::rows_of;
-
-template <class Get>
-std::vector<std::int32_t> ints(const std::vector<Contact>& cs, Get get) {
-  std::vector<std::int32_t> out;
-  out.reserve(cs.size());
-  for (const Contact& c : cs) out.push_back(static_cast<std::int32_t>(get(c)));
-  return out;
-}
-
-template <class Get>
-std::vector<double> reals(const std::vector<Contact>& cs, Get get) {
-  std::vector<double> out;
-  out.reserve(cs.size());
-  for (const Contact& c : cs) out.push_back(get(c));
-  return out;
-}
-
-std::vector<Vec2> points(const h5::Reader& r, const std::string& name, std::size_t n) {
-  const h5::Array<double> a = r.f64(name);
-  if (a.dims.size() != 2 || a.dims[0] != n || a.dims[1] != 2)
-    r.fail("dataset " + name + " must have shape (" + std::to_string(n) + ", 2) for this model");
-  std::vector<Vec2> out(n);
-  for (std::size_t i = 0; i < n; ++i) out[i] = Vec2(a.data[2 * i], a.data[2 * i + 1]);
-  return out;
-}
 
 }  // namespace
 
 void write_checkpoint(h5::Writer& w, const SimulationState& s) {
   h5::Id g = w.group("checkpoint");
-  w.attr_f64(g.get(), "time", s.time);
-  w.attr_f64(g.get(), "dt", s.dt);
-  w.attr_i32(g.get(), "step_count", s.step_count);
-  w.attr_i32(g.get(), "started", s.started ? 1 : 0);
+  h5io::write_checkpoint_clock(w, g.get(), s.time, s.dt, s.step_count, s.started);
   w.attr_text(g.get(), "description",
               "complete simulation state after step step_count; with /steps (the log) and /series (the "
               "histories) it is what `dda df --resume` continues from");
@@ -76,42 +52,39 @@ void write_checkpoint(h5::Writer& w, const SimulationState& s) {
   const std::vector<Contact>& cs = s.contacts;
   h5::Id cg(H5Gcreate2(g.get(), "contacts", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
   const hid_t c = cg.get();
-  w.i32(c, "vertex_block", ints(cs, [](const Contact& x) { return x.vblock; }), "", "block of the vertex P1");
-  w.i32(c, "vertex", ints(cs, [](const Contact& x) { return x.vertex; }), "", "vertex index in its block");
-  w.i32(c, "edge_block", ints(cs, [](const Contact& x) { return x.eblock; }), "", "block of the edge");
-  w.i32(c, "edge", ints(cs, [](const Contact& x) { return x.edge; }), "", "edge index (from vertex edge to the next)");
-  w.i32(c, "joint", ints(cs, [](const Contact& x) { return x.joint; }), "", "joint index (joint sets, then default)");
-  w.i32(c, "state", ints(cs, [](const Contact& x) { return static_cast<int>(x.state); }), "",
+  w.i32(c, "vertex_block", contact_ints(cs, [](const Contact& x) { return x.vblock; }), "", "block of the vertex P1");
+  w.i32(c, "vertex", contact_ints(cs, [](const Contact& x) { return x.vertex; }), "", "vertex index in its block");
+  w.i32(c, "edge_block", contact_ints(cs, [](const Contact& x) { return x.eblock; }), "", "block of the edge");
+  w.i32(c, "edge", contact_ints(cs, [](const Contact& x) { return x.edge; }), "", "edge index (from vertex edge to the next)");
+  w.i32(c, "joint", contact_ints(cs, [](const Contact& x) { return x.joint; }), "", "joint index (joint sets, then default)");
+  w.i32(c, "state", contact_ints(cs, [](const Contact& x) { return static_cast<int>(x.state); }), "",
         "0 open, 1 sliding, 2 locked");
-  w.i32(c, "slip_sign", ints(cs, [](const Contact& x) { return x.slip_sign; }), "", "+1/-1 slip direction along the edge");
-  w.i32(c, "bonded", ints(cs, [](const Contact& x) { return x.bonded ? 1 : 0; }), "", "1: intact cohesive/tensile bond");
-  w.i32(c, "broke", ints(cs, [](const Contact& x) { return x.broke ? 1 : 0; }), "", "1: bond broke in the last iterate");
-  w.i32(c, "friction_settled", ints(cs, [](const Contact& x) { return x.friction_settled ? 1 : 0; }), "",
+  w.i32(c, "slip_sign", contact_ints(cs, [](const Contact& x) { return x.slip_sign; }), "", "+1/-1 slip direction along the edge");
+  w.i32(c, "bonded", contact_ints(cs, [](const Contact& x) { return x.bonded ? 1 : 0; }), "", "1: intact cohesive/tensile bond");
+  w.i32(c, "broke", contact_ints(cs, [](const Contact& x) { return x.broke ? 1 : 0; }), "", "1: bond broke in the last iterate");
+  w.i32(c, "friction_settled", contact_ints(cs, [](const Contact& x) { return x.friction_settled ? 1 : 0; }), "",
         "1: friction force settled in the last iterate");
-  w.f64(c, "ref_ratio", reals(cs, [](const Contact& x) { return x.ref_ratio; }), {cs.size()}, "1",
+  w.f64(c, "ref_ratio", contact_reals(cs, [](const Contact& x) { return x.ref_ratio; }), {cs.size()}, "1",
         "shear reference point on the edge (0 at its first vertex, 1 at its second)");
-  w.f64(c, "normal_force", reals(cs, [](const Contact& x) { return x.normal_force; }), {cs.size()}, "N",
+  w.f64(c, "normal_force", contact_reals(cs, [](const Contact& x) { return x.normal_force; }), {cs.size()}, "N",
         "compression positive");
-  w.f64(c, "shear_force", reals(cs, [](const Contact& x) { return x.shear_force; }), {cs.size()}, "N",
+  w.f64(c, "shear_force", contact_reals(cs, [](const Contact& x) { return x.shear_force; }), {cs.size()}, "N",
         "on the vertex along the edge");
-  w.f64(c, "slip_velocity", reals(cs, [](const Contact& x) { return x.slip_velocity; }), {cs.size()}, "m/s",
+  w.f64(c, "slip_velocity", contact_reals(cs, [](const Contact& x) { return x.slip_velocity; }), {cs.size()}, "m/s",
         "relative sliding speed");
-  w.f64(c, "length", reals(cs, [](const Contact& x) { return x.length; }), {cs.size()}, "m",
+  w.f64(c, "length", contact_reals(cs, [](const Contact& x) { return x.length; }), {cs.size()}, "m",
         "joint length the contact stands for");
-  w.f64(c, "friction_theta", reals(cs, [](const Contact& x) { return x.friction.theta; }), {cs.size()}, "s",
+  w.f64(c, "friction_theta", contact_reals(cs, [](const Contact& x) { return x.friction.theta; }), {cs.size()}, "s",
         "rate-and-state variable");
-  w.f64(c, "friction_slip", reals(cs, [](const Contact& x) { return x.friction.slip; }), {cs.size()}, "m",
+  w.f64(c, "friction_slip", contact_reals(cs, [](const Contact& x) { return x.friction.slip; }), {cs.size()}, "m",
         "cumulative slip");
-  {  // further law-specific memory (FrictionState::extra), ragged
-    std::vector<double> extra;
-    for (const Contact& x : cs) extra.insert(extra.end(), x.friction.extra.begin(), x.friction.extra.end());
-    w.i32(c, "friction_extra_count",
-          ints(cs, [](const Contact& x) { return static_cast<std::int32_t>(x.friction.extra.size()); }), "",
-          "number of law-specific friction variables of each contact (in friction_extra)");
-    w.f64(c, "friction_extra", extra, {extra.size()}, "",
-          "law-specific friction variables of all contacts, in contact order (e.g. degradation: reversals, "
-          "last slip sign)");
-  }
+  // further law-specific memory (FrictionState::extra), ragged
+  h5io::write_ragged(w, c, cs, [](const Contact& x) -> const std::vector<double>& { return x.friction.extra; },
+                     "friction_extra_count",
+                     "number of law-specific friction variables of each contact (in friction_extra)",
+                     "friction_extra",
+                     "law-specific friction variables of all contacts, in contact order (e.g. degradation: reversals, "
+                     "last slip sign)");
 
   h5::Id pg(H5Gcreate2(g.get(), "points", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
   w.f64(pg.get(), "fixed_anchor", flat(s.fixed_anchor), {s.fixed_anchor.size(), 2}, "m",
@@ -127,36 +100,24 @@ void write_checkpoint(h5::Writer& w, const SimulationState& s) {
 }
 
 void read_checkpoint(const h5::Reader& r, const std::vector<std::size_t>& vertex_counts, SimulationState& s) {
-  if (!r.exists("/checkpoint")) r.fail("has no /checkpoint group, so the run cannot be resumed");
-  h5::Id g(H5Gopen2(r.file(), "/checkpoint", H5P_DEFAULT), H5Gclose);
-  if (!g.valid()) r.fail("/checkpoint is not a group");
-  const auto time = r.attr_f64(g.get(), "time", "/checkpoint");
-  const auto dt = r.attr_f64(g.get(), "dt", "/checkpoint");
-  const auto steps = r.attr_int(g.get(), "step_count", "/checkpoint");
-  if (!time || !dt || !steps) r.fail("/checkpoint lacks one of its attributes time, dt, step_count");
-  s.time = *time;
-  s.dt = *dt;
-  s.step_count = static_cast<int>(*steps);
-  s.started = r.attr_int(g.get(), "started", "/checkpoint").value_or(1) != 0;
+  const h5io::CheckpointClock clock = h5io::read_checkpoint_clock(r, true);
+  s.time = clock.time;
+  s.dt = clock.dt;
+  s.step_count = clock.step_count;
+  s.started = clock.started;
 
   const std::size_t nb = vertex_counts.size();
   std::size_t nv = 0;
   for (std::size_t n : vertex_counts) nv += n;
-  const std::vector<Vec2> verts = points(r, "/checkpoint/blocks/vertices", nv);
-  auto table = [&r](const std::string& name, std::size_t rows, std::size_t cols) {
-    const h5::Array<double> a = r.f64(name);
-    if (a.dims.size() != 2 || a.dims[0] != rows || a.dims[1] != cols)
-      r.fail("dataset " + name + " must have shape (" + std::to_string(rows) + ", " + std::to_string(cols) + ")");
-    return a.data;
-  };
-  const std::vector<double> vel = table("/checkpoint/blocks/velocity", nb, kDofs);
-  const std::vector<double> vel_end = table("/checkpoint/blocks/velocity_end", nb, kDofs);
+  const std::vector<Vec2> verts = read_points2(r, "/checkpoint/blocks/vertices", nv);
+  const std::vector<double> vel = checkpoint_table(r, "/checkpoint/blocks/velocity", nb, kDofs);
+  const std::vector<double> vel_end = checkpoint_table(r, "/checkpoint/blocks/velocity_end", nb, kDofs);
   // Files written before it was saved lack it: it only sets where the
   // iterative solver starts, so they resume to within its tolerance.
   const bool has_acc = r.exists("/checkpoint/blocks/acceleration");
   const std::vector<double> acc =
-      has_acc ? table("/checkpoint/blocks/acceleration", nb, kDofs) : std::vector<double>(nb * kDofs, 0.0);
-  const std::vector<double> stress = table("/checkpoint/blocks/stress", nb, 3);
+      has_acc ? checkpoint_table(r, "/checkpoint/blocks/acceleration", nb, kDofs) : std::vector<double>(nb * kDofs, 0.0);
+  const std::vector<double> stress = checkpoint_table(r, "/checkpoint/blocks/stress", nb, 3);
   s.blocks.assign(nb, BlockState{});
   std::size_t at = 0;
   for (std::size_t i = 0; i < nb; ++i) {
@@ -211,24 +172,16 @@ void read_checkpoint(const h5::Reader& r, const std::vector<std::size_t>& vertex
   }
   // Law-specific friction memory; files written before it existed have none.
   if (r.exists(c + "friction_extra_count")) {
-    const auto count = ivec("friction_extra_count");
-    const std::vector<double> extra = r.f64(c + "friction_extra").data;
-    std::size_t pos = 0;
-    for (std::size_t k = 0; k < nc; ++k) {
-      if (count[k] < 0 || pos + static_cast<std::size_t>(count[k]) > extra.size())
-        r.fail("dataset " + c + "friction_extra holds fewer values than friction_extra_count asks for");
-      s.contacts[k].friction.extra.assign(extra.begin() + static_cast<long>(pos),
-                                          extra.begin() + static_cast<long>(pos + count[k]));
-      pos += static_cast<std::size_t>(count[k]);
-    }
-    if (pos != extra.size()) r.fail("dataset " + c + "friction_extra holds more values than friction_extra_count");
+    std::vector<std::vector<double>> extra =
+        h5io::read_ragged(r, c, ivec("friction_extra_count"), "friction_extra_count", "friction_extra", 0);
+    for (std::size_t k = 0; k < nc; ++k) s.contacts[k].friction.extra = std::move(extra[k]);
   }
 
   const std::string p = "/checkpoint/points/";
-  s.fixed_anchor = points(r, p + "fixed_anchor", rows_of(r, p + "fixed_anchor"));
-  s.fixed_pos = points(r, p + "fixed_position", rows_of(r, p + "fixed_position"));
-  s.load_pos = points(r, p + "load_position", rows_of(r, p + "load_position"));
-  s.measurement_pos = points(r, p + "measurement_position", rows_of(r, p + "measurement_position"));
+  s.fixed_anchor = read_points2(r, p + "fixed_anchor");
+  s.fixed_pos = read_points2(r, p + "fixed_position");
+  s.load_pos = read_points2(r, p + "load_position");
+  s.measurement_pos = read_points2(r, p + "measurement_position");
 
   s.bolts = h5io::read_bolt_states<2>(r, "/checkpoint/bolts/");
 

@@ -80,4 +80,10 @@ void write_contacts3_vtu(const std::string& path, const Simulation3& sim) {
   g.write(path);
 }
 
+void write_frame_vtu(const Simulation3& sim, const Results3& results, const std::string& blocks_path,
+                     const std::string& contacts_path) {
+  write_blocks3_frame_vtu(blocks_path, sim, results.blocks.blocks);
+  if (!contacts_path.empty()) write_contacts3_vtu(contacts_path, sim);
+}
+
 }  // namespace dda::df3

@@ -70,4 +70,10 @@ void write_contacts_vtu(const std::string& path, const Simulation& sim) {
   g.write(path);
 }
 
+void write_frame_vtu(const Simulation& sim, const Results& /*results*/, const std::string& blocks_path,
+                     const std::string& contacts_path) {
+  write_blocks_frame_vtu(blocks_path, sim);
+  if (!contacts_path.empty()) write_contacts_vtu(contacts_path, sim);
+}
+
 }  // namespace dda::df

@@ -7,9 +7,11 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <optional>
 #include <tuple>
 
 #include "block_terms.hpp"
+#include "step_control.hpp"
 #include "dda/df/contact_detection.hpp"
 
 namespace dda::df {
@@ -480,12 +482,12 @@ const StepRecord& Simulation::advance(double max_dt) {
   // throws) puts back what the iteration changed (saved by detect_contacts),
   // so the next starts from the contacts of the start of the step.
   const Control& ctl = model_.control;
-  const double dt_min = ctl.min_dt_ratio * ctl.dt;
+  const StepControl rule(ctl.dt, ctl.min_dt_ratio * ctl.dt, max_step_displacement_);
   StepRecord rec;
   Eigen::VectorXd d;
   for (;;) {
-    const bool shortened = max_dt < dt_;
-    const double dt = std::min(dt_, max_dt);
+    const StepControl::Try attempt = StepControl::next_try(dt_, max_dt);
+    const double dt = attempt.dt;
     // The first solve starts from the motion the last step predicts. Once a
     // model has come to rest under its loads this saves a third of the PCG
     // iterations of that solve (28 to 18 on the 10k layered model), against
@@ -498,17 +500,13 @@ const StepRecord& Simulation::advance(double max_dt) {
     try {
       settled = open_close(dt, contacts_, d, iterations, !quiet_step());
       moved = max_vertex_displacement(d);
-      check_runaway(d, moved, dt, dt <= dt_min * (1 + 1e-9));
+      check_runaway(d, moved, dt, rule.at_min_dt(dt));
     } catch (...) {
       restore_iteration_states();  // a checkpoint written after this holds the step's start
       throw;
     }
-    const bool too_far = moved > max_step_displacement_;
-    if ((!settled || too_far) && dt > dt_min * (1 + 1e-9)) {
-      // Redo with a smaller step: cut to what the displacement limit
-      // allows, or by 3 when the contact states did not settle.
-      const double factor = too_far ? std::min(0.5, 0.9 * max_step_displacement_ / moved) : 1.0 / 3.0;
-      dt_ = std::max(dt_min, dt * factor);
+    if (const std::optional<double> shorter = rule.redo_dt(settled, moved, dt)) {
+      dt_ = *shorter;
       ++rec.dt_cuts;
       restore_iteration_states();
       continue;
@@ -520,8 +518,7 @@ const StepRecord& Simulation::advance(double max_dt) {
       const ScopedTimer timer(timings_.accept);
       accept(dt, d, contacts_, rec);
     }
-    // Easy steps let dt grow back gradually toward the user's dt.
-    if (!shortened && rec.dt_cuts == 0) dt_ = std::min(ctl.dt, dt_ * 1.1);
+    dt_ = rule.after_step(dt_, attempt.shortened, rec.dt_cuts);
     break;
   }
   log_.push_back(rec);

@@ -4,6 +4,7 @@
 
 #include "contact_coupling3.hpp"
 #include "simulation3d_assembly.hpp"
+#include "step_control.hpp"
 #include "water_faces.hpp"
 #include "dda/common/error.hpp"
 #include "dda/df/runaway.hpp"
@@ -86,7 +87,9 @@ Simulation3::Simulation3(Model3 model)
       coupling_(std::make_unique<ContactCoupling3>()) {
   const size_t n = model_.blocks.size();
   if (model_.fixed.empty()) model_.fixed.assign(n, false);
-  if (model_.fixed.size() != n) throw std::invalid_argument("Model3: fixed must have one entry per block");
+  if (model_.fixed.size() != n)
+    throw InputError("The 3D fixed-block list has " + std::to_string(model_.fixed.size()) + " entries for " +
+                     std::to_string(n) + " blocks.");
   for (size_t b = 0; b < n; ++b) {
     refresh_geometry(model_.blocks[b]);
     dof_.push_back(model_.fixed[b] ? -1 : n_dofs_);
@@ -95,7 +98,7 @@ Simulation3::Simulation3(Model3 model)
   set_initial_state();
   known_.assign(n, Vector12d::Zero());
   if (model_.earthquake.motion && !model_.earthquake.mode)
-    throw std::invalid_argument("Model3: an earthquake needs its mode (loading or displacement)");
+    throw InputError("The 3D earthquake has no mode: give loading, displacement or incident.");
   make_friction_laws();
   index_points();
   start_bolts();
@@ -404,12 +407,11 @@ StepInfo3 Simulation3::advance(double max_dt) {
   detect();
   start_contacts_ = contacts_;  // into the storage of the last step's copy
   const std::vector<Contact3>& start = start_contacts_;
-  const double dt_min = ctl.min_dt_ratio * ctl.dt;
-  const double limit = ctl.max_displacement_ratio * w0_;
+  const df::StepControl rule(ctl.dt, ctl.min_dt_ratio * ctl.dt, ctl.max_displacement_ratio * w0_);
   int cuts = 0;
   for (;;) {
-    const bool shortened = max_dt < dt_;
-    const double dt = std::min(dt_, max_dt);
+    const df::StepControl::Try attempt = df::StepControl::next_try(dt_, max_dt);
+    const double dt = attempt.dt;
     contacts_ = start;
     std::vector<Vector12d> d;
     int iterations = 0;
@@ -421,15 +423,12 @@ StepInfo3 Simulation3::advance(double max_dt) {
       contacts_ = start;
       throw;
     }
-    const bool too_far = moved > limit;
-    if ((!settled || too_far) && dt > dt_min * (1 + 1e-9)) {
-      // Redo with a smaller step: to what the displacement limit allows, or
-      // by 3 when the contact states did not settle (the 2D rule).
-      dt_ = std::max(dt_min, dt * (too_far ? std::min(0.5, 0.9 * limit / moved) : 1.0 / 3.0));
+    if (const std::optional<double> shorter = rule.redo_dt(settled, moved, dt)) {
+      dt_ = *shorter;
       ++cuts;
       continue;
     }
-    if (too_far && moved > 2 * w0_) {
+    if (rule.too_far(moved) && moved > 2 * w0_) {
       contacts_ = start;  // the state before the step, for the checkpoint written after this
       throw df::RunawayError("Step " + std::to_string(log_.size() + 1) + " at t = " + std::to_string(time_) +
                                  " s: a block moves " + std::to_string(moved) +
@@ -438,8 +437,7 @@ StepInfo3 Simulation3::advance(double max_dt) {
                              static_cast<int>(log_.size()) + 1, time_, -1);
     }
     const StepInfo3 info = record(dt, d, moved, iterations, settled, cuts);
-    // Easy steps let dt grow back gradually toward the user's dt.
-    if (!shortened && cuts == 0) dt_ = std::min(ctl.dt, dt_ * 1.1);
+    dt_ = rule.after_step(dt_, attempt.shortened, cuts);
     return info;
   }
 }

@@ -1,10 +1,12 @@
 // Materials and the state at t = 0 of a 3D run (Model3: materials,
 // block_material, initial_stress, initial_velocity).
 //
-// Sizes that do not match the blocks are a programming error
-// (std::invalid_argument, as for Model3::fixed); values a user could have
-// typed (a material, a stress or velocity that is not finite, a moving
-// fixed block) are an InputError of one sentence.
+// A model that does not hold together (no material, lists whose sizes do
+// not match the blocks, a material that does not exist) and values a user
+// could have typed (a material, a stress or velocity that is not finite, a
+// moving fixed block) are an InputError of one sentence, as build_model()
+// makes them in 2D (model.cpp): `dda` reports them as a problem of the input,
+// not as an internal error.
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -28,19 +30,21 @@ void check_material(const Material3& m, std::size_t index) {
 
 void Simulation3::set_initial_state() {
   const std::size_t n = model_.blocks.size();
-  if (model_.materials.empty()) throw std::invalid_argument("Model3: materials must hold at least one material");
+  if (model_.materials.empty()) throw InputError("The 3D model has no material.");
   for (std::size_t k = 0; k < model_.materials.size(); ++k) check_material(model_.materials[k], k);
   if (model_.block_material.empty()) model_.block_material.assign(n, 0);
   if (model_.block_material.size() != n)
-    throw std::invalid_argument("Model3: block_material must have one entry per block");
-  for (const int k : model_.block_material)
-    if (k < 0 || static_cast<std::size_t>(k) >= model_.materials.size())
-      throw std::invalid_argument("Model3: block_material refers to a material that does not exist");
+    throw InputError("The 3D block material list has " + std::to_string(model_.block_material.size()) +
+                     " entries for " + std::to_string(n) + " blocks.");
+  for (std::size_t b = 0; b < n; ++b)
+    if (const int k = model_.block_material[b]; k < 0 || static_cast<std::size_t>(k) >= model_.materials.size())
+      throw InputError("3D block " + std::to_string(b) + " refers to material " + std::to_string(k) +
+                       ", which does not exist.");
 
   if (model_.initial_stress.empty()) model_.initial_stress.assign(n, Vector6d::Zero());
   if (model_.initial_velocity.empty()) model_.initial_velocity.assign(n, Vector12d::Zero());
   if (model_.initial_stress.size() != n || model_.initial_velocity.size() != n)
-    throw std::invalid_argument("Model3: initial_stress and initial_velocity must be empty or one per block");
+    throw InputError("The 3D initial stress and velocity lists must be empty or have one entry per block.");
   for (std::size_t b = 0; b < n; ++b) {
     if (!model_.initial_stress[b].allFinite() || !model_.initial_velocity[b].allFinite())
       throw InputError("3D block " + std::to_string(b) + ": its initial stress or velocity is not a finite number.");

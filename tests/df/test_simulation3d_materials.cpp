@@ -28,6 +28,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "../common/input_error_of.hpp"
 #include "dda/common/error.hpp"
 #include "dda/df/results3d.hpp"
 #include "dda/df/simulation3d.hpp"
@@ -393,15 +394,26 @@ TEST(Simulation3Materials, ParaViewShowsTheMaterial) {
 }
 
 // What the model must hold together: one material per block index, a
-// velocity only where there are unknowns, finite numbers.
+// velocity only where there are unknowns, finite numbers. Each is a
+// problem of the input (InputError, which `dda` reports as such), in the
+// words 2D's build_model() uses; the column has 3 blocks and 3 materials.
 TEST(Simulation3Materials, RefusesAnInconsistentModel) {
   const Column col;
   Model3 m = col.model();
-  m.block_material = {0, 1, 3};  // there are 3 materials
-  EXPECT_THROW(Simulation3{m}, std::invalid_argument);
+  m.block_material = {0, 1, 3};
+  EXPECT_EQ(dda::testing::input_error_of([&] { Simulation3 sim(m); }),
+            "3D block 2 refers to material 3, which does not exist.");
   m = col.model();
   m.block_material = {0, 1};
-  EXPECT_THROW(Simulation3{m}, std::invalid_argument);
+  EXPECT_EQ(dda::testing::input_error_of([&] { Simulation3 sim(m); }),
+            "The 3D block material list has 2 entries for 3 blocks.");
+  m = col.model();
+  m.fixed = {true};
+  EXPECT_EQ(dda::testing::input_error_of([&] { Simulation3 sim(m); }),
+            "The 3D fixed-block list has 1 entries for 3 blocks.");
+  m = col.model();
+  m.materials.clear();
+  EXPECT_EQ(dda::testing::input_error_of([&] { Simulation3 sim(m); }), "The 3D model has no material.");
   m = col.model();
   m.initial_velocity.assign(3, Vector12d::Zero());
   m.initial_velocity[0][0] = 1;  // block 0 is fixed

@@ -5,15 +5,11 @@
 // DDA for Windows analysis file), steps the simulation to its end with a
 // progress bar, and keeps results.h5 up to date (rewritten atomically every
 // so often, with a checkpoint), so an interrupted run resumes where it was.
-// A 3D blocks file (and a 3D results file to resume) goes to cmd_df3.cpp.
-#include <chrono>
-#include <cmath>
-#include <csignal>
-#include <cstdio>
+// The job and its resumption are df_job.hpp's, shared with 3D; here is what
+// is 2D's own: the analysis file and the 2D types. A 3D blocks file (and a
+// 3D results file to resume) goes to cmd_df3.cpp.
 #include <filesystem>
-#include <fstream>
 #include <iostream>
-#include <sstream>
 
 #include "commands.hpp"
 #include "dda/common/error.hpp"
@@ -21,14 +17,12 @@
 #include "dda/common/model_io3.hpp"
 #include "dda/common/output_guard.hpp"
 #include "dda/common/scenario.hpp"
-#include "dda/common/vtk.hpp"
+#include "dda/common/text_input.hpp"
 #include "dda/df/import_ana.hpp"
 #include "dda/df/results.hpp"
 #include "dda/df/results3d.hpp"
-#include "dda/df/runaway.hpp"
 #include "dda/df/scenario.hpp"
-#include "dda/common/text_input.hpp"
-#include "df_session.hpp"
+#include "df_job.hpp"
 #include "pipeline.hpp"
 
 namespace dda::cli {
@@ -37,37 +31,24 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Everything a run needs, from a fresh start or a results file.
-struct Job {
-  df::Results results;
-  df::DfScenario scenario;
-  OutputOptions output;
-  std::string input_files;  // what an error of the model is said after
+// The 2D side of df_job.hpp.
+struct Df2 {
+  using Simulation = df::Simulation;
+  using Results = df::Results;
+  using Scenario = df::DfScenario;
+  using State = df::SimulationState;
+  static Results read_results(const std::string& path) { return df::read_results_h5(path); }
+  static DfJob<Df2> job_from_saved(const Results& saved);
+  static df::Model model_of(const DfJob<Df2>& job);
 };
-
-void execute(Job& job, const DfStage& stage, std::optional<df::SimulationState> resume_from) {
-  // A YAML scenario's model was checked as it was read; what an .ana's
-  // model still refuses (a fixed point of the .geo outside every block) is
-  // a problem of its two files, and says which.
-  df::Simulation sim(naming_input(job.input_files, [&] { return df::build_model(job.scenario.input); }));
-  if (resume_from) sim.restore(*resume_from);
-  run_session(sim, job.results, job.output, stage,
-              [](const df::Simulation& s, const std::string& blocks, const std::string& contacts) {
-                df::write_blocks_frame_vtu(blocks, s);
-                if (!contacts.empty()) df::write_contacts_vtu(contacts, s);
-              });
-}
+using Job = DfJob<Df2>;
 
 Job job_from_scenario(const YamlNode& root, const BlockModel& blocks, const std::string& blocks_path) {
   Job job;
   job.scenario = df::read_df_scenario(root, blocks, blocks_path);
-  job.output = parse_output_options(root);
-  job.input_files = root.file();
-  df::Results& r = job.results;
-  r.source = scenario_source(root, blocks.provenance.seed, blocks_path);
-  r.blocks = blocks;
-  r.solver = job.scenario.input.control.solver;
-  r.output = df::resolve_output_schedule(job.scenario.output, job.scenario.input.control);
+  fill_job_from_scenario(job, root, blocks, blocks_path);
+  job.results.solver = job.scenario.input.control.solver;
+  job.results.output = df::resolve_output_schedule(job.scenario.output, job.scenario.input.control);
   return job;
 }
 
@@ -91,31 +72,19 @@ Job job_from_ana(const std::string& text, const std::string& label, const BlockM
   return job;
 }
 
-void resume(const std::string& path, DfStage stage) {
-  df::Results saved = df::read_results_h5(path);
-  if (stage.results_path.empty()) stage.results_path = path;
+Job Df2::job_from_saved(const Results& saved) {
   const df::ResultsSource& src = saved.source;
-  if (saved.complete) {
-    say(stage.quiet, path + ": the run is already complete (" + std::to_string(saved.log.size()) +
-                         " steps); nothing to resume.\n");
-    return;
-  }
-  Job job;
-  try {
-    if (src.input_kind == "ana") {
-      job = job_from_ana(src.provenance.scenario_text, src.provenance.scenario_path, saved.blocks, src.blocks_path,
-                         true);
-    } else {
-      const YamlNode root = YamlNode::load_string(src.provenance.scenario_text, src.provenance.scenario_path);
-      root.allow(scenario_sections());
-      job = job_from_scenario(root, saved.blocks, src.blocks_path);
-    }
-  } catch (const InputError& e) {
-    throw InputError(path + ": the scenario stored in the file no longer reads: " + e.what());
-  }
-  // What was saved wins: the schedule (and solver) the run started with.
-  adopt_saved(job.results, saved, path, stage);
-  execute(job, stage, std::move(saved.checkpoint));
+  if (src.input_kind == "ana")
+    return job_from_ana(src.provenance.scenario_text, src.provenance.scenario_path, saved.blocks, src.blocks_path,
+                        true);
+  return job_from_scenario(stored_scenario(src), saved.blocks, src.blocks_path);
+}
+
+// A YAML scenario's model was checked as it was read; what an .ana's model
+// still refuses (a fixed point of the .geo outside every block) is a
+// problem of its two files, and says which.
+df::Model Df2::model_of(const Job& job) {
+  return naming_input(job.input_files, [&] { return df::build_model(job.scenario.input); });
 }
 
 }  // namespace
@@ -123,7 +92,7 @@ void resume(const std::string& path, DfStage stage) {
 void run_df_scenario(const YamlNode& root, const BlockModel& blocks, const std::string& blocks_path,
                      const DfStage& stage) {
   Job job = job_from_scenario(root, blocks, blocks_path);
-  execute(job, stage, std::nullopt);
+  execute_job<Df2>(job, stage, std::nullopt);
 }
 
 void add_df_command(CLI::App& app, const GlobalOptions& global) {
@@ -163,7 +132,7 @@ void add_df_command(CLI::App& app, const GlobalOptions& global) {
       if (h5_format_of(opt->resume) == df3::kResults3dFormat)
         resume_df3(opt->resume, stage);
       else
-        resume(opt->resume, stage);
+        resume_job<Df2>(opt->resume, stage);
       return;
     }
     if (opt->input.empty()) throw InputError("dda df needs a scenario (.yaml) or analysis (.ana) file, or --resume.");
@@ -189,7 +158,7 @@ void add_df_command(CLI::App& app, const GlobalOptions& global) {
       const YamlNode root = load_scenario(opt->input);
       job = job_from_scenario(root, blocks, opt->blocks);
     }
-    execute(job, stage, std::nullopt);
+    execute_job<Df2>(job, stage, std::nullopt);
   });
 }
 

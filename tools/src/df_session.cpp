@@ -169,23 +169,6 @@ InterruptGuard::~InterruptGuard() {
 
 const volatile std::sig_atomic_t* InterruptGuard::flag() const { return &g_interrupted; }
 
-std::string frame_name(const char* kind, std::size_t frame) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "df_%s_%05zu.vtu", kind, frame);
-  return buf;
-}
-
-void write_pvd_series(const std::filesystem::path& dir, const std::vector<double>& times, bool contacts,
-                      bool bolts) {
-  std::vector<PvdEntry> entries;
-  for (std::size_t f = 0; f < times.size(); ++f) {
-    entries.push_back({frame_name("blocks", f), times[f], 0, "blocks"});
-    if (contacts) entries.push_back({frame_name("contacts", f), times[f], 1, "contacts"});
-    if (bolts) entries.push_back({frame_name("bolts", f), times[f], contacts ? 2 : 1, "bolts"});
-  }
-  write_pvd((dir / "df.pvd").string(), entries);
-}
-
 void throw_runaway(const df::RunawayError& e, const std::string& results_path) {
   std::string sentence = e.what();
   if (!sentence.empty() && sentence.back() == '.') sentence.pop_back();

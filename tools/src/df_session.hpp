@@ -16,7 +16,6 @@
 
 #include "commands.hpp"
 #include "dda/common/yaml_reader.hpp"
-#include "dda/df/bolts_vtk.hpp"
 #include "dda/df/damping.hpp"
 #include "dda/df/energy.hpp"
 #include "dda/df/results.hpp"
@@ -24,6 +23,7 @@
 #include "dda/df/run_loop.hpp"
 #include "dda/df/run_threads.hpp"
 #include "dda/df/runaway.hpp"
+#include "df_outputs.hpp"
 
 namespace dda::cli {
 
@@ -89,12 +89,6 @@ class InterruptGuard {
   void (*old_int_)(int);
   void (*old_term_)(int);
 };
-
-// df_blocks_00012.vtu, df_contacts_00012.vtu, df_bolts_00012.vtu.
-std::string frame_name(const char* kind, std::size_t frame);
-// df.pvd in `dir` listing the blocks (and contacts, and bolts) frame files at `times`.
-void write_pvd_series(const std::filesystem::path& dir, const std::vector<double>& times, bool contacts,
-                      bool bolts);
 
 // The runaway as the one sentence `dda` ends with, saying where the results are.
 [[noreturn]] void throw_runaway(const df::RunawayError& e, const std::string& results_path);
@@ -166,14 +160,13 @@ bool model_asks_for_equilibrium(const Sim& sim) {
 
 // A prepared forward run, 2D or 3D alike, with everything `dda df` does
 // around it: the threads for the model's size (df::RunThreads, said in the
-// run's first line), checkpoints on the output options' schedule, a ParaView frame
-// (write_frame(sim, blocks_file, contacts_file or "")) at every saved frame,
-// the progress bar, a clean stop on Ctrl-C, the runaway sentence and the
-// closing one. The dimension's run_recorded and run_progress are found by
+// run's first line), the outputs of df_outputs.hpp (the results file with
+// checkpoints on the output options' schedule, the ParaView series), the
+// progress bar, a clean stop on Ctrl-C, the runaway sentence and the
+// closing one. The dimension's run loop hooks and run_progress are found by
 // argument-dependent lookup (df:: for Simulation, df3:: for Simulation3).
-template <class Sim, class Results, class WriteFrame>
-void run_session(Sim& sim, Results& results, const OutputOptions& output, const DfStage& stage,
-                 WriteFrame write_frame) {
+template <class Sim, class Results>
+void run_session(Sim& sim, Results& results, const OutputOptions& output, const DfStage& stage) {
   const int blocks = static_cast<int>(sim.blocks().size());
   const df::RunThreads threads(blocks);
   say(stage.quiet, "DF: " + std::to_string(blocks) + " blocks on " + std::to_string(threads.threads()) +
@@ -243,23 +236,7 @@ void run_session(Sim& sim, Results& results, const OutputOptions& output, const 
   rc.checkpoint_seconds = output.checkpoint_seconds;
   rc.checkpoint_steps = output.checkpoint_steps;
   rc.stop_at_step = stage.stop_at_step;
-  const std::filesystem::path vtk(stage.vtk_dir);
-  if (!stage.vtk_dir.empty()) {
-    make_dir(vtk);
-    const bool contacts = output.vtk_contacts;
-    const bool bolts = !sim.bolts().empty();
-    rc.on_frame = [&results, vtk, contacts, bolts, write_frame](const Sim& s, std::size_t frame) {
-      write_frame(s, (vtk / frame_name("blocks", frame)).string(),
-                  contacts ? (vtk / frame_name("contacts", frame)).string() : std::string());
-      // The bolts of the frame (df/bolts_vtk.hpp), one overload per dimension.
-      using df::write_bolts_vtu;
-      using df3::write_bolts_vtu;
-      if (bolts) write_bolts_vtu((vtk / frame_name("bolts", frame)).string(), s);
-      std::vector<double> times;
-      for (const auto& f : results.frames) times.push_back(f.time);
-      write_pvd_series(vtk, times, contacts, bolts);
-    };
-  }
+  const RunOutputs<Sim, Results> outputs(stage, output);
   const auto& control = sim.model().control;
   ProgressSample start;
   start.fraction = run_progress(sim);
@@ -283,7 +260,7 @@ void run_session(Sim& sim, Results& results, const OutputOptions& output, const 
     InterruptGuard guard;
     rc.interrupted = guard.flag();
     try {
-      end = run_recorded(sim, results, stage.results_path, rc);
+      end = df::run_recorded_loop(sim, results, outputs.writers(), rc);
     } catch (const df::RunawayError& e) {
       progress.finish();
       throw_runaway(e, stage.results_path);

@@ -98,6 +98,10 @@ Results read_results_h5(const std::string& path, const ResultsParts& parts = Res
 // vertex_block, edge_block, joint).
 void write_blocks_frame_vtu(const std::string& path, const Simulation& sim);
 void write_contacts_vtu(const std::string& path, const Simulation& sim);
+// Both of a frame (the contacts unless `contacts_path` is empty): the hook
+// of the ParaView series of `dda df` (tools/src/df_outputs.hpp).
+void write_frame_vtu(const Simulation& sim, const Results& results, const std::string& blocks_path,
+                     const std::string& contacts_path);
 
 using RunControl = BasicRunControl<Simulation>;
 

@@ -66,6 +66,11 @@ Results3 read_results3_h5(const std::string& path, const df::ResultsParts& parts
 // (vector, N), block_i, block_j, joint).
 void write_blocks3_frame_vtu(const std::string& path, const Simulation3& sim, const std::vector<Polyhedron>& initial);
 void write_contacts3_vtu(const std::string& path, const Simulation3& sim);
+// Both of a frame (the contacts unless `contacts_path` is empty; the blocks'
+// displacements from results.blocks): the hook of the ParaView series of
+// `dda df` (tools/src/df_outputs.hpp).
+void write_frame_vtu(const Simulation3& sim, const Results3& results, const std::string& blocks_path,
+                     const std::string& contacts_path);
 
 using RunControl3 = df::BasicRunControl<Simulation3>;
 

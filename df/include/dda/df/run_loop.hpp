@@ -14,12 +14,19 @@
 //   Frame make_frame(const Sim&);               the block states now
 //   void write_results(path, const Results&, const Sim&, bool complete);
 // Results has `frames` (each with `step` and `time`) and `output` (an OutputSchedule).
+//
+// What the run writes goes through one interface, RunWriter: the results
+// file with its checkpoint (ResultsFileWriter, the hook write_results) and
+// whatever else the caller registers (`dda df`'s ParaView series,
+// tools/src/df_outputs.hpp).
 #include <chrono>
 #include <cmath>
 #include <csignal>
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "dda/df/runaway.hpp"
 
@@ -52,16 +59,48 @@ bool frame_due(const Sim& sim, const Results& r, double time) {
 
 }  // namespace detail
 
-// Steps `sim` to its end, saving frames into `results.frames` and rewriting
-// `path` on the schedule of `control`, and once more at the end. A
-// RunawayError from a step is rethrown after the results up to the step
-// before it are written.
+// One output of a recorded run. The loop tells every writer, in the order
+// given, when a frame has been added to `results.frames` and when the run
+// so far is due on disk: on the checkpoint schedule, before a runaway is
+// rethrown (the results up to the step before) and at the end (`complete`
+// when the run reached its end).
 template <class Sim, class Results>
-RunEnd run_recorded_loop(Sim& sim, Results& results, const std::string& path, const BasicRunControl<Sim>& control) {
+class RunWriter {
+ public:
+  virtual ~RunWriter() = default;
+  virtual void frame(const Sim& /*sim*/, const Results& /*results*/, std::size_t /*index*/) {}
+  virtual void save(const Sim& /*sim*/, const Results& /*results*/, bool /*complete*/) {}
+};
+
+// The results file at `path`, rewritten atomically with its checkpoint at
+// each save (the dimension's write_results).
+template <class Sim, class Results>
+class ResultsFileWriter : public RunWriter<Sim, Results> {
+ public:
+  explicit ResultsFileWriter(std::string path) : path_(std::move(path)) {}
+  void save(const Sim& sim, const Results& results, bool complete) override {
+    write_results(path_, results, sim, complete);
+  }
+
+ private:
+  std::string path_;
+};
+
+// Steps `sim` to its end, saving frames into `results.frames` and telling
+// `writers` of each, and saving through them on the schedule of `control`
+// and once more at the end. A RunawayError from a step is rethrown after
+// the results up to the step before it are saved.
+template <class Sim, class Results>
+RunEnd run_recorded_loop(Sim& sim, Results& results, const std::vector<RunWriter<Sim, Results>*>& writers,
+                         const BasicRunControl<Sim>& control) {
   using Clock = std::chrono::steady_clock;
   auto record = [&] {
     results.frames.push_back(make_frame(sim));
+    for (RunWriter<Sim, Results>* w : writers) w->frame(sim, results, results.frames.size() - 1);
     if (control.on_frame) control.on_frame(sim, results.frames.size() - 1);
+  };
+  auto save = [&](bool complete) {
+    for (RunWriter<Sim, Results>* w : writers) w->save(sim, results, complete);
   };
   if (results.frames.empty()) record();
   auto last_write = Clock::now();
@@ -80,7 +119,7 @@ RunEnd run_recorded_loop(Sim& sim, Results& results, const std::string& path, co
       run_step(sim);
     } catch (const RunawayError&) {
       // The failed step was not accepted: keep what the run did before it.
-      write_results(path, results, sim, false);
+      save(false);
       throw;
     }
     ++steps_since_write;
@@ -89,14 +128,21 @@ RunEnd run_recorded_loop(Sim& sim, Results& results, const std::string& path, co
     const double since = std::chrono::duration<double>(Clock::now() - last_write).count();
     if ((control.checkpoint_steps > 0 && steps_since_write >= control.checkpoint_steps) ||
         (control.checkpoint_seconds > 0 && since >= control.checkpoint_seconds)) {
-      write_results(path, results, sim, false);
+      save(false);
       last_write = Clock::now();
       steps_since_write = 0;
     }
   }
   if (end == RunEnd::Finished && results.frames.back().step != last_step(sim)) record();  // the end is always a frame
-  write_results(path, results, sim, end == RunEnd::Finished);
+  save(end == RunEnd::Finished);
   return end;
+}
+
+// The run with one output, the results file at `path`.
+template <class Sim, class Results>
+RunEnd run_recorded_loop(Sim& sim, Results& results, const std::string& path, const BasicRunControl<Sim>& control) {
+  ResultsFileWriter<Sim, Results> file(path);
+  return run_recorded_loop(sim, results, {&file}, control);
 }
 
 }  // namespace dda::df
