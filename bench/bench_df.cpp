@@ -151,7 +151,7 @@ void time_steps(benchmark::State& state, Simulation& sim) {
   state.counters["accept_pct"] = 100 * (t1.accept - t0.accept) / total;
   state.counters["near_searches"] = static_cast<double>(t1.near_searches - t0.near_searches);
   state.counters["solves_per_step"] = static_cast<double>(t1.solves - t0.solves) / n;
-  // Solves on contact clusters (contact_clusters.cpp) and their CG iterations.
+  // Solves on contact clusters (contact_clusters.hpp) and their CG iterations.
   state.counters["local_solves_per_step"] = static_cast<double>(t1.local_solves - t0.local_solves) / n;
   state.counters["local_it"] = t1.local_solves > t0.local_solves
                                    ? static_cast<double>(t1.local_iterations - t0.local_iterations) /

@@ -423,7 +423,7 @@ bool Simulation::open_close(double dt, std::vector<Contact>& contacts, Eigen::Ve
     }
     if (model_.control.contact_clusters && iterations < limit) {
       // The changes settled on the blocks around them: the next global
-      // solve checks them, at full accuracy (contact_clusters.cpp).
+      // solve checks them, at full accuracy (contact_clusters.hpp).
       const bool settled = settle_clusters(dt, contacts, d, changes, friction);
       solver_->set_warm_start({d, dt});
       if (settled) {

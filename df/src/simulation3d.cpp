@@ -4,6 +4,7 @@
 
 #include "contact_coupling3.hpp"
 #include "simulation3d_assembly.hpp"
+#include "start_up_relax.hpp"
 #include "step_control.hpp"
 #include "water_faces.hpp"
 #include "dda/common/error.hpp"
@@ -314,6 +315,7 @@ bool Simulation3::iterate(double dt, std::vector<Vector12d>& d, int& iterations)
   // The start-up relaxation has no shorter step to fall back on, so it may
   // iterate longer than a step (start_up.hpp).
   const int limit = settling_ ? std::max(df::kSettleOpenClose, model_.max_iterations) : model_.max_iterations;
+  df::FrictionRunaway runaway;  // while settling (start_up_relax.hpp)
   while (iterations < limit) {
     ++iterations;
     solver_->set_trial(trial && iterations < limit);
@@ -325,16 +327,20 @@ bool Simulation3::iterate(double dt, std::vector<Vector12d>& d, int& iterations)
     // Each contact updates only itself, in parallel; `before` keeps the
     // state it was assembled in, for the list of changes (contact order).
     bool settled = true;
+    double friction_change = 0;  // the largest of a contact sliding before and after (a maximum: in any order)
     const int nc = static_cast<int>(contacts_.size());
-#pragma omp parallel for schedule(static) reduction(&& : settled) if (nc > 20 * df::parallel_grain())
+#pragma omp parallel for schedule(static) reduction(&& : settled) reduction(max : friction_change) if (nc > 20 * df::parallel_grain())
     for (int k = 0; k < nc; ++k) {
       Contact3& c = contacts_[static_cast<std::size_t>(k)];
       before[static_cast<std::size_t>(k)] = c.state;
+      const double friction_used = c.strength;
       bool friction_settled = true;
       const ContactState3 s =
           update_contact3(c, model_, law_of(c), dt, d[c.i], d[c.j], changes[k] >= 2, friction_settled);
       settled = settled && friction_settled && s == c.state;
       unsettled[static_cast<std::size_t>(k)] = !friction_settled || s != c.state;
+      if (s == ContactState3::Sliding && c.state == ContactState3::Sliding)
+        friction_change = std::max(friction_change, std::abs(c.strength - friction_used));
       if (s != c.state) ++changes[k];
       c.state = s;
     }
@@ -344,7 +350,10 @@ bool Simulation3::iterate(double dt, std::vector<Vector12d>& d, int& iterations)
     if (settled) {
       if (!was_trial) return true;
       trial = false;
-    } else if (model_.control.contact_clusters && iterations < limit && settle_clusters(dt, d, changes, changed, unsettled)) {
+    } else if (settling_ && runaway.diverging(!changed.empty(), friction_change)) {
+      break;
+    } else if (model_.control.contact_clusters && iterations < limit &&
+               settle_clusters(dt, d, changes, changed, unsettled)) {
       trial = false;  // the next global solve checks the clusters' states, at full accuracy
     }
   }

@@ -165,7 +165,7 @@ struct Control {
   ViscousDamping damping;            // of the blocks' deformation (damping.hpp); none by default
   int max_open_close = 6;            // open-close iterations before dt is cut
   // Settle state changes on the blocks around them between global solves
-  // (contact_clusters.cpp); false: every iterate solves the whole system.
+  // (contact_clusters.hpp); false: every iterate solves the whole system.
   // With it, the tunnel-roof example runs at its dt with the default 6
   // iterations; without, its dt was cut to 1e-4 s (docs/solver2d.md).
   bool contact_clusters = true;

@@ -189,7 +189,7 @@ class Simulation {
   };
   ContactUpdate update_one(std::size_t k, std::vector<Contact>& contacts, const Eigen::VectorXd& d, double dt,
                            std::vector<std::uint8_t>& changes);
-  // Contact clusters (contact_clusters.cpp): after a global solve whose
+  // Contact clusters (contact_clusters.hpp, this kernel in contact_clusters_2d.cpp): after a global solve whose
   // update changed a few contacts, their states are settled by solves on
   // the blocks around them alone, the rest of the model held where the
   // global solve put it; true when they settled (the caller then verifies

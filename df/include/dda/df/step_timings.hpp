@@ -14,7 +14,7 @@ struct StepTimings {
   double accept = 0;          // s: ending an accepted step (blocks moved, stresses, energies, friction states)
   double total = 0;           // s: whole steps, attempts thrown away included
   long solves = 0;            // linear solves of the whole system done
-  long local_solves = 0;      // solves on contact clusters (contact_clusters.cpp)
+  long local_solves = 0;      // solves on contact clusters (contact_clusters.hpp)
   long local_iterations = 0;  // their conjugate-gradient iterations, summed
   long contact_updates = 0;   // contacts updated after the solves (open-close; see Model::contact_update_tolerance)
   long near_searches = 0;     // fresh searches for near pairs (the rest reused them)
