@@ -39,6 +39,7 @@
 // equilibrium (toppling, say): settling stops there and the dynamics takes
 // over.
 #include <cmath>
+#include <limits>
 #include <optional>
 
 #include "dda/df/start_up.hpp"
@@ -117,7 +118,7 @@ class FrictionRunaway {
   }
 
  private:
-  double last_ = 0;
+  double last_ = std::numeric_limits<double>::infinity();  // the first update only sets the reference
   int growing_ = 0;
 };
 

@@ -22,6 +22,7 @@
 #include "dda/df/results.hpp"
 #include "dda/df/results3d.hpp"
 #include "df3_io_test_models.hpp"
+#include "df_io_test_models.hpp"
 #include "df_test_models.hpp"
 
 namespace dda::df {
@@ -160,14 +161,6 @@ ModelInput sliding_block_2d(const JointProperties& j) {
   return in;
 }
 
-Results fresh_results(const ModelInput& in) {
-  Results r;
-  r.blocks = in.geometry;
-  r.source.provenance.scenario_path = "test";
-  r.output.every = 10;
-  return r;
-}
-
 TEST_P(EveryFrictionLaw, BlockPulledOffItsBaseMovesFreely2d) {
   const ModelInput in = pulled_block_2d(joint());
   Simulation sim(build_model(in));
@@ -194,12 +187,12 @@ TEST_P(EveryFrictionLaw, StateRoundTripsAndResumeIsBitIdentical2d) {
   const std::string whole = temp("2d_whole").string(), part = temp("2d_part").string();
   Simulation a(build_model(in));
   {
-    Results r = fresh_results(in);
+    Results r = test::fresh_results(in);
     ASSERT_EQ(run_recorded(a, r, whole, RunControl{}), RunEnd::Finished);
   }
   {  // stopped half way: the checkpoint holds every contact's law state as it was
     Simulation half(build_model(in));
-    Results r = fresh_results(in);
+    Results r = test::fresh_results(in);
     RunControl rc;
     rc.stop_at_step = 10;
     ASSERT_EQ(run_recorded(half, r, part, rc), RunEnd::Stopped);
@@ -219,7 +212,7 @@ TEST_P(EveryFrictionLaw, StateRoundTripsAndResumeIsBitIdentical2d) {
   {  // resumed, as `dda df --resume`
     Results saved = read_results_h5(part);
     b.restore(*saved.checkpoint);
-    Results r = fresh_results(in);
+    Results r = test::fresh_results(in);
     r.frames = saved.frames;
     ASSERT_EQ(run_recorded(b, r, part, RunControl{}), RunEnd::Finished);
   }

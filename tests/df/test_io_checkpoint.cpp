@@ -8,6 +8,7 @@
 
 #include "dda/common/error.hpp"
 #include "dda/df/results.hpp"
+#include "df_io_test_models.hpp"
 #include "df_test_models.hpp"
 
 namespace dda::df {
@@ -45,14 +46,6 @@ ModelInput sliding_model(const std::string& solver) {
   in.measurements.push_back({"slider", test::rotated(Vec2(6.5, 0.5), a), 1});
   in.measurements.push_back({"pushed", test::rotated(Vec2(2.5, 0.25), a), 2});
   return in;
-}
-
-Results fresh_results(const ModelInput& in) {
-  Results r;
-  r.blocks = in.geometry;
-  r.source.provenance.scenario_path = "test";
-  r.output.every = 10;
-  return r;
 }
 
 void expect_same(const Results& a, const Results& b) {
@@ -105,12 +98,12 @@ TEST_P(IoCheckpoint, ResumeReproducesTheUninterruptedRun) {
 
   {  // 2N steps in one go
     Simulation sim(build_model(in));
-    Results r = fresh_results(in);
+    Results r = test::fresh_results(in);
     EXPECT_EQ(run_recorded(sim, r, whole, RunControl{}), RunEnd::Finished);
   }
   {  // N steps, stopped
     Simulation sim(build_model(in));
-    Results r = fresh_results(in);
+    Results r = test::fresh_results(in);
     RunControl rc;
     rc.stop_at_step = 30;
     EXPECT_EQ(run_recorded(sim, r, part, rc), RunEnd::Stopped);
@@ -124,7 +117,7 @@ TEST_P(IoCheckpoint, ResumeReproducesTheUninterruptedRun) {
     Simulation sim(build_model(in));
     sim.restore(*saved.checkpoint);
     EXPECT_EQ(sim.time(), saved.checkpoint->time);
-    Results r = fresh_results(in);
+    Results r = test::fresh_results(in);
     r.frames = saved.frames;
     EXPECT_EQ(run_recorded(sim, r, part, RunControl{}), RunEnd::Finished);
   }

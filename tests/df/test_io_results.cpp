@@ -8,29 +8,13 @@
 #include "dda/common/error.hpp"
 #include "dda/common/model_io.hpp"
 #include "dda/df/results.hpp"
+#include "df_io_test_models.hpp"
 #include "df_test_models.hpp"
 
 namespace dda::df {
 namespace {
 
 namespace fs = std::filesystem;
-
-// A 1 x 1 block falling freely onto a fixed 4 x 1 base from 0.1 m.
-ModelInput drop_model() {
-  ModelInput in;
-  in.geometry.blocks.push_back(test::make_block(test::rectangle(0, 0, 4, 1), 0));
-  in.geometry.blocks.push_back(test::make_block(test::rectangle(1.5, 1.1, 1, 1), 0));
-  in.geometry.sets = {{"J", "user"}};
-  in.geometry.points = {{{"f", PointKind::Fixed, {0.5, 0.5}}, 0},
-                        {{"g", PointKind::Fixed, {3.5, 0.5}}, 0},
-                        {{"top", PointKind::Measurement, {2, 1.6}}, 1}};
-  in.geometry.provenance.seed = 11;
-  in.materials = {test::rock(2000, 1e9)};
-  in.control.dt = 2e-3;
-  in.control.total_time = 0.3;
-  add_points_from_block_model(in.geometry, {}, in);
-  return in;
-}
 
 std::string slurp(const std::string& path) {
   std::ifstream f(path);
@@ -43,7 +27,7 @@ TEST(IoResults, WritesAndReadsBack) {
   const fs::path dir = fs::temp_directory_path() / "dda_io_results";
   fs::create_directories(dir);
   const std::string path = (dir / "r.h5").string();
-  const ModelInput in = drop_model();
+  const ModelInput in = test::drop_model();
   Simulation sim(build_model(in));
   Results r;
   r.blocks = in.geometry;
@@ -102,7 +86,7 @@ TEST(IoResults, RefusesOtherFiles) {
   const fs::path dir = fs::temp_directory_path() / "dda_io_results_bad";
   fs::create_directories(dir);
   const std::string blocks = (dir / "b.h5").string();
-  write_blocks_h5(blocks, drop_model().geometry);
+  write_blocks_h5(blocks, test::drop_model().geometry);
   try {
     read_results_h5(blocks);
     FAIL();

@@ -10,26 +10,13 @@
 #include <vector>
 
 #include "dda/df/results.hpp"
+#include "df_io_test_models.hpp"
 #include "df_test_models.hpp"
 
 namespace dda::df {
 namespace {
 
 namespace fs = std::filesystem;
-
-// A 1 x 1 block falling onto a fixed 4 x 1 base from 0.1 m, for 0.3 s.
-ModelInput drop_model() {
-  ModelInput in;
-  in.geometry.blocks.push_back(test::make_block(test::rectangle(0, 0, 4, 1), 0));
-  in.geometry.blocks.push_back(test::make_block(test::rectangle(1.5, 1.1, 1, 1), 0));
-  in.geometry.sets = {{"J", "user"}};
-  in.geometry.points = {{{"f", PointKind::Fixed, {0.5, 0.5}}, 0}, {{"g", PointKind::Fixed, {3.5, 0.5}}, 0}};
-  in.materials = {test::rock(2000, 1e9)};
-  in.control.dt = 2e-3;
-  in.control.total_time = 0.3;
-  add_points_from_block_model(in.geometry, {}, in);
-  return in;
-}
 
 // Writes down what it is told, with its name, into a shared list.
 class Recorder : public RunWriter<Simulation, Results> {
@@ -52,7 +39,7 @@ TEST(RunWriters, EveryWriterHearsEachFrameAndSaveInOrder) {
   const fs::path dir = fs::temp_directory_path() / "dda_run_writers";
   fs::create_directories(dir);
   const std::string path = (dir / "r.h5").string();
-  const ModelInput in = drop_model();
+  const ModelInput in = test::drop_model();
   Simulation sim(build_model(in));
   Results r;
   r.blocks = in.geometry;
