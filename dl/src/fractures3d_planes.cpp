@@ -79,6 +79,17 @@ std::vector<Fracture3> generate_persistent_set(const PersistentSetSpec& spec, in
     throw InputError(where + " would need about " + format_number(steps, 3) + " planes with spacing " +
                      format_number(s) + ", more than the limit of " + format_number(kMaxPersistentPlanes) + ".");
 
+  // Without randomness the planes are t0 + k s with k counted in a double:
+  // a point more than kMaxSpacingsToPoint spacings from the domain would put
+  // k where ++k no longer changes it (beyond 2^53) and the loop below would
+  // never end, and long before that the positions drift from the rounding
+  // of t0 + k s. (With randomness `steps` above already bounds the walk.)
+  const double spacings_to_point = std::max({0.0, t_lo - t0, t0 - t_hi}) / s;
+  if (spacings_to_point > kMaxSpacingsToPoint)
+    throw InputError(where + " passes through a point " + format_number(spacings_to_point, 3) +
+                     " spacings from the domain, more than the limit of " + format_number(kMaxSpacingsToPoint) +
+                     "; give a point nearer the domain.");
+
   std::vector<double> offsets;
   if (spec.randomness == 0) {
     // Integer multiples of the spacing from the point, not a running sum, so
