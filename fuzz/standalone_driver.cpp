@@ -157,10 +157,20 @@ void install_handlers() {
 // The address space is capped, so that a reader that allocates without
 // bound meets a std::bad_alloc (a finding) rather than the machine's limit.
 // Not under AddressSanitizer, which reserves terabytes of shadow memory.
+#if defined(__SANITIZE_ADDRESS__)
+#define DDA_FUZZ_UNDER_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define DDA_FUZZ_UNDER_ASAN 1
+#endif
+#endif
 void limit_memory(std::uint64_t mb) {
-#if !defined(__SANITIZE_ADDRESS__)
-  const rlimit limit{mb << 20, mb << 20};
-  setrlimit(RLIMIT_AS, &limit);
+#if !defined(DDA_FUZZ_UNDER_ASAN)
+  const rlim_t bytes = static_cast<rlim_t>(std::min<std::uint64_t>(mb, std::uint64_t{1} << 30)) << 20;
+  const rlimit limit{bytes, bytes};
+  if (setrlimit(RLIMIT_AS, &limit) != 0)
+    std::fprintf(stderr, "fuzz_%s: the address space could not be capped at %llu MB; a reader that allocates "
+                 "without bound will meet the machine's limit instead.\n", kTarget, static_cast<unsigned long long>(mb));
 #endif
 }
 
