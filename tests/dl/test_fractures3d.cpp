@@ -289,7 +289,7 @@ TEST(Fractures3dPlanes, PersistentSetErrorsNameTheSet) {
                 .find("more than the limit"),
             std::string::npos);
   // Found by the fuzz target scenario3d (docs/reliability.md): a point at
-  // 1.8e19 m, 1.5e17 spacings from the domain, made k of t0 + k s too large
+  // 1.8e19 m, 1.3e17 spacings from the domain, made k of t0 + k s too large
   // for ++k to change it, and the set grew until the memory ran out. The
   // limit is 1e9 spacings (kMaxSpacingsToPoint). Horizontal planes, spacing
   // 12, through z = 2^64 = 1.8446744073709552e19 above the cube [0, 10]^3:
