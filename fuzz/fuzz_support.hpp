@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <fcntl.h>
 #include <unistd.h>
 
 #include "dda/common/error.hpp"
@@ -37,6 +38,12 @@ inline std::string as_text(const std::uint8_t* data, std::size_t size) {
 // name ends in `suffix` for readers that go by the extension.
 // The file is removed when the process ends normally (libFuzzer ends a run
 // with exit()).
+//
+// The old bytes are overwritten in place and the file then cut to the new
+// size, never truncated to zero first: ext4 flushes a file to the disk when
+// it is closed after such a truncation (its auto_da_alloc), which made every
+// input cost a few milliseconds of waiting for the disk (300 inputs a
+// second instead of 10,000 for the STL target here).
 inline std::string scratch_file(const std::uint8_t* data, std::size_t size, const std::string& suffix) {
   struct RemovedAtExit {
     std::string path;
@@ -46,8 +53,16 @@ inline std::string scratch_file(const std::uint8_t* data, std::size_t size, cons
   static const RemovedAtExit scratch{std::string(tmp && *tmp ? tmp : "/tmp") + "/dda_fuzz_" +
                                      std::to_string(static_cast<long>(getpid())) + suffix};
   const std::string& path = scratch.path;
-  std::FILE* f = std::fopen(path.c_str(), "wb");
-  if (!f || (size && std::fwrite(data, 1, size, f) != size) || std::fclose(f) != 0) {
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT, 0644);
+  bool ok = fd >= 0;
+  for (std::size_t done = 0; ok && done < size;) {
+    const ssize_t w = ::pwrite(fd, data + done, size - done, static_cast<off_t>(done));
+    ok = w > 0;
+    done += ok ? static_cast<std::size_t>(w) : 0;
+  }
+  ok = ok && ::ftruncate(fd, static_cast<off_t>(size)) == 0;
+  if (fd >= 0 && ::close(fd) != 0) ok = false;
+  if (!ok) {
     std::perror(path.c_str());
     std::abort();  // the machine, not the reader: stop rather than fuzz nothing
   }

@@ -25,7 +25,27 @@ Vec3 checked_normal(double dip_deg, double dip_direction_deg, const std::string&
 
 bool finite(const Vec3& p) { return p.allFinite(); }
 
+// The domain spans [t_lo, t_hi] along the normal n (extremes at corners).
+std::pair<double, double> span_along(const Vec3& n, const Box3& domain) {
+  double t_lo = 0, t_hi = 0;
+  for (int c = 0; c < 8; ++c) {
+    const Vec3 corner(c & 1 ? domain.hi.x() : domain.lo.x(), c & 2 ? domain.hi.y() : domain.lo.y(),
+                      c & 4 ? domain.hi.z() : domain.lo.z());
+    const double t = n.dot(corner);
+    t_lo = c == 0 ? t : std::min(t_lo, t);
+    t_hi = c == 0 ? t : std::max(t_hi, t);
+  }
+  return {t_lo, t_hi};
+}
+
 }  // namespace
+
+double spacings_to_point(const PersistentSetSpec& spec, const Box3& domain) {
+  const Vec3 n = normal_from_dip(spec.dip_deg, spec.dip_direction_deg);
+  const auto [t_lo, t_hi] = span_along(n, domain);
+  const double t0 = n.dot(spec.point.value_or(domain.lo));
+  return std::max({0.0, t_lo - t0, t0 - t_hi}) / spec.spacing;
+}
 
 Fracture3 make_plane(const PlaneSpec& spec, int set) {
   const std::string where = "A deterministic plane";
@@ -58,15 +78,7 @@ std::vector<Fracture3> generate_persistent_set(const PersistentSetSpec& spec, in
   const Vec3 point = spec.point.value_or(domain.lo);
   if (!finite(point)) throw InputError(where + " must pass through a point with finite coordinates.");
 
-  // The domain spans [t_lo, t_hi] along the normal (extremes at corners).
-  double t_lo = 0, t_hi = 0;
-  for (int c = 0; c < 8; ++c) {
-    const Vec3 corner(c & 1 ? domain.hi.x() : domain.lo.x(), c & 2 ? domain.hi.y() : domain.lo.y(),
-                      c & 4 ? domain.hi.z() : domain.lo.z());
-    const double t = n.dot(corner);
-    t_lo = c == 0 ? t : std::min(t_lo, t);
-    t_hi = c == 0 ? t : std::max(t_hi, t);
-  }
+  const auto [t_lo, t_hi] = span_along(n, domain);
   const double tol = 1e-9 * (domain.hi - domain.lo).norm();
   const double t0 = n.dot(point), s = spec.spacing;
 
@@ -78,6 +90,17 @@ std::vector<Fracture3> generate_persistent_set(const PersistentSetSpec& spec, in
   if (steps > kMaxPersistentPlanes)
     throw InputError(where + " would need about " + format_number(steps, 3) + " planes with spacing " +
                      format_number(s) + ", more than the limit of " + format_number(kMaxPersistentPlanes) + ".");
+
+  // Without randomness the planes are t0 + k s with k counted in a double:
+  // a point more than kMaxSpacingsToPoint spacings from the domain would put
+  // k where ++k no longer changes it (beyond 2^53) and the loop below would
+  // never end, and long before that the positions drift from the rounding
+  // of t0 + k s. (With randomness `steps` above already bounds the walk.)
+  const double reach = spacings_to_point(spec, domain);
+  if (reach > kMaxSpacingsToPoint)
+    throw InputError(where + " passes through a point " + format_number(reach, 3) +
+                     " spacings from the domain, more than the limit of " + format_number(kMaxSpacingsToPoint) +
+                     "; give a point nearer the domain.");
 
   std::vector<double> offsets;
   if (spec.randomness == 0) {

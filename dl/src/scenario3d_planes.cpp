@@ -19,6 +19,11 @@ void read_persistent_sets3(const YamlNode& root, Builder3& b) {
     spec.spacing = n.number("spacing", Range::positive());
     if (n.has("point")) spec.point = b.local(point3(n, "point"));
     spec.randomness = n.number("randomness", 0.0, Range::half_open(0, 1));
+    // Checked here too, to name the key: the generator's message names the set.
+    if (spec.point && spacings_to_point(spec, b.model.domain) > kMaxSpacingsToPoint)
+      n.fail_key("point", "lies " + format_number(spacings_to_point(spec, b.model.domain), 3) +
+                              " spacings from the domain, more than the limit of " +
+                              format_number(kMaxSpacingsToPoint) + "; give a point nearer the domain");
     const int set = b.add_new_set(spec.name, "persistent", n, "name");
     Stream rng(b.seed, "persistent3d.set", i);
     std::vector<Fracture3> planes;

@@ -50,6 +50,12 @@ ThicknessSpec read_thickness(const YamlNode& n) {
     const double mean = n.number("mean", Range::positive());
     const double std = n.number("std", Range::non_negative());
     lognormal_from_moments(mean, std, t.mu, t.sigma);
+    // (std / mean)^2 overflows for a mean this small against its std (found
+    // by the fuzz target scenario2d: mean 4.9e-324): ln(thickness) would have
+    // no finite mu and sigma, and no draw could ever reach the minimum.
+    if (!std::isfinite(t.mu) || !std::isfinite(t.sigma))
+      n.fail_key("mean", "is too small for a log-normal thickness with std " + format_number(std) +
+                             " (the logarithm of the thickness would have no finite mean and spread)");
   } else {
     if (n.has("std")) n.fail_key("std", "goes with mean, not with mu (give mean and std, or mu and sigma)");
     t.mu = n.number("mu", Range::any());

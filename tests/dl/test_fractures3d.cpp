@@ -288,6 +288,23 @@ TEST(Fractures3dPlanes, PersistentSetErrorsNameTheSet) {
   EXPECT_NE(error_of([&] { generate_persistent_set(persistent("J1", 0, 0, 1e-6), 0, b, rng); })
                 .find("more than the limit"),
             std::string::npos);
+  // Found by the fuzz target scenario3d (docs/reliability.md): a point at
+  // 1.8e19 m, 1.3e17 spacings from the domain, made k of t0 + k s too large
+  // for ++k to change it, and the set grew until the memory ran out. The
+  // limit is 1e9 spacings (kMaxSpacingsToPoint). Horizontal planes, spacing
+  // 12, through z = 2^64 = 1.8446744073709552e19 above the cube [0, 10]^3:
+  // (2^64 - 10) / 12 = 1.54e18 spacings away. Spacing 1 through z = -(1e9 + 1)
+  // is 1e9 + 1 spacings away: refused too; through z = -(1e9 - 1) it is
+  // within, and the planes are z = 1 .. 9 (0 and 10 are the cube's faces).
+  EXPECT_NE(error_of([&] { generate_persistent_set(persistent("S", 0, 0, 12, V3(0, 0, 1.8446744073709552e19)), 0, b, rng); })
+                .find("Persistent set 'S' passes through a point 1.54e+18 spacings from the domain"),
+            std::string::npos);
+  EXPECT_NE(error_of([&] { generate_persistent_set(persistent("S", 0, 0, 1, V3(0, 0, -1e9 - 1)), 0, b, rng); })
+                .find("more than the limit of 1e+09"),
+            std::string::npos);
+  const auto within = generate_persistent_set(persistent("S", 0, 0, 1, V3(0, 0, -1e9 + 1)), 0, b, rng);
+  ASSERT_EQ(within.size(), 9u);
+  for (std::size_t i = 0; i < within.size(); ++i) EXPECT_DOUBLE_EQ(within[i].offset(), 1.0 + static_cast<double>(i));
 }
 
 // ---- polygons from vertices --------------------------------------------

@@ -308,6 +308,12 @@ TEST(Scenario3d, PersistentSetsAndPlanes) {
                {"test.yaml:5:", "persistent_sets[0].spacing cannot be generated", "limit"});
   expect_error("persistent_sets:\n  - {name: S, dip: 0, dip_direction: 0, spacing: 1, randomness: 1}\n",
                {"test.yaml:5:", "persistent_sets[0].randomness"});
+  // The fuzz target scenario3d's finding (docs/reliability.md): a point 2^64 m
+  // up in the cube [0, 10]^3 with spacing 12 is (2^64 - 10) / 12 = 1.54e18
+  // spacings above it, beyond the 1e9 of kMaxSpacingsToPoint; the error names
+  // the point, not the spacing.
+  expect_error("persistent_sets:\n  - {name: S, dip: 0, dip_direction: 0, spacing: 12, point: [0, 0, 18446744073709551616]}\n",
+               {"test.yaml:5:", "persistent_sets[0].point lies 1.54e+18 spacings from the domain", "1e+09"});
 }
 
 // ---- layering ---------------------------------------------------------------

@@ -63,6 +63,13 @@ struct PersistentSetSpec {
 
 // Most planes one persistent set may have (more could not be cut into blocks).
 inline constexpr double kMaxPersistentPlanes = 1e6;
+// Farthest a persistent set's point may lie from the domain, in spacings:
+// its planes are placed to about 1e9 x 2.2e-16 = 2e-7 of a spacing.
+inline constexpr double kMaxSpacingsToPoint = 1e9;
+// How many spacings the set's point (default the domain's lo corner) lies
+// outside the domain along the set's normal: 0 inside. For a spec whose
+// dip and spacing generate_persistent_set accepts.
+double spacings_to_point(const PersistentSetSpec& spec, const Box3& domain);
 
 // Every plane of the set that crosses the domain, as Plane fractures ordered
 // by offset, each `centre` the centroid of the plane's section of the domain
