@@ -56,4 +56,18 @@ inline ModelInput brick_wall(int rows, int cols, const std::string& solver = "au
   return in;
 }
 
+// Two 1 m blocks side by side, joint set "J" (0) between them, given about
+// `origin` (the model's local origin, coordinate_range.hpp).
+inline BlockModel two_blocks(const Vec2& origin = Vec2(0, 0)) {
+  BlockModel m;
+  m.sets = {{"J", "user"}};
+  for (int k = 0; k < 2; ++k) {
+    Block b = make_block(rectangle(k, 0, 1, 1));
+    b.edge_set = {kBoundarySet, k == 0 ? 0 : kBoundarySet, kBoundarySet, k == 1 ? 0 : kBoundarySet};
+    m.blocks.push_back(b);
+  }
+  m.origin = origin;
+  return m;
+}
+
 }  // namespace dda::df::test

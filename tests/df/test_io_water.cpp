@@ -16,22 +16,10 @@ namespace {
 
 using dda::testing::input_error_of;
 
-// Two 1 m blocks side by side, joint set "J" (0) between them.
-BlockModel two_blocks() {
-  BlockModel m;
-  m.sets = {{"J", "user"}};
-  for (int k = 0; k < 2; ++k) {
-    Block b = test::make_block(test::rectangle(k, 0, 1, 1));
-    b.edge_set = {kBoundarySet, k == 0 ? 0 : kBoundarySet, kBoundarySet, k == 1 ? 0 : kBoundarySet};
-    m.blocks.push_back(b);
-  }
-  return m;
-}
-
 const std::string kControl = "control: {dt: 0.01, steps: 2}\n";
 
 DfScenario read2(const std::string& text) {
-  return read_df_scenario(YamlNode::load_string(kControl + text, "w.yaml"), two_blocks(), "b.h5");
+  return read_df_scenario(YamlNode::load_string(kControl + text, "w.yaml"), test::two_blocks(), "b.h5");
 }
 df3::DfScenario3 read3(const std::string& text) {
   return df3::read_df3_scenario(YamlNode::load_string("dimension: 3\n" + kControl + text, "w3.yaml"),

@@ -31,19 +31,6 @@ std::string yaml_point(const Point& p) {
   return out + "]";
 }
 
-// Two 1 m blocks side by side, joint set "J" (0) between them, about `origin`.
-BlockModel two_blocks(const Vec2& origin) {
-  BlockModel m;
-  m.sets = {{"J", "user"}};
-  for (int k = 0; k < 2; ++k) {
-    Block b = test::make_block(test::rectangle(k, 0, 1, 1));
-    b.edge_set = {kBoundarySet, k == 0 ? 0 : kBoundarySet, kBoundarySet, k == 1 ? 0 : kBoundarySet};
-    m.blocks.push_back(b);
-  }
-  m.origin = origin;
-  return m;
-}
-
 TEST(LocalOriginScenario, TwoDimensionsReadAboutTheBlocksOrigin) {
   // 1e12 and 5e11 plus the halves and quarters below are exact in doubles
   // (their spacing there is 2^-13 and 2^-14), so the far scenario says
@@ -59,9 +46,10 @@ TEST(LocalOriginScenario, TwoDimensionsReadAboutTheBlocksOrigin) {
            "], young: 1e10}]}\n" + "points: [{name: m, block: {containing: " + at(1.5, 0.5) + "}, at: " +
            at(1.25, 0.75) + "}]\n";
   };
-  const DfScenario far = read_df_scenario(YamlNode::load_string(text(origin), "far.yaml"), two_blocks(origin), "b.h5");
+  const DfScenario far =
+      read_df_scenario(YamlNode::load_string(text(origin), "far.yaml"), test::two_blocks(origin), "b.h5");
   const DfScenario near =
-      read_df_scenario(YamlNode::load_string(text(Vec2(0, 0)), "near.yaml"), two_blocks(Vec2(0, 0)), "b.h5");
+      read_df_scenario(YamlNode::load_string(text(Vec2(0, 0)), "near.yaml"), test::two_blocks(Vec2(0, 0)), "b.h5");
   ASSERT_TRUE(far.input.water && near.input.water);
   EXPECT_EQ(far.input.water->level, 0.5);
   EXPECT_EQ(far.input.water->level, near.input.water->level);
@@ -78,7 +66,7 @@ TEST(LocalOriginScenario, TwoDimensionsReadAboutTheBlocksOrigin) {
   // A water surface's knots move on both axes.
   const std::string surface = kControl + "water: {surface: [" + yaml_point(Vec2(Vec2(0, 1) + origin)) + ", " +
                               yaml_point(Vec2(Vec2(2, 3) + origin)) + "]}\n";
-  const DfScenario w = read_df_scenario(YamlNode::load_string(surface, "w.yaml"), two_blocks(origin), "b.h5");
+  const DfScenario w = read_df_scenario(YamlNode::load_string(surface, "w.yaml"), test::two_blocks(origin), "b.h5");
   EXPECT_EQ(w.input.water->head(Vec2(1, 0)), 2.0);
 }
 
