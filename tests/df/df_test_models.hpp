@@ -1,6 +1,7 @@
 #pragma once
 // Small hand-built models shared by the DF tests.
 #include <cmath>
+#include <map>
 #include <string>
 
 #include "dda/common/block_model.hpp"
@@ -68,6 +69,17 @@ inline BlockModel two_blocks(const Vec2& origin = Vec2(0, 0)) {
   }
   m.origin = origin;
   return m;
+}
+
+// A joint with friction law `name`, its numeric parameters and its option
+// words (as a scenario's joints section gives them).
+inline JointProperties friction_joint(const std::string& name, std::map<std::string, double> numbers,
+                                      std::map<std::string, std::string> words = {}) {
+  JointProperties j;
+  j.friction_law = name;
+  j.friction_parameters = std::move(numbers);
+  j.friction_options = std::move(words);
+  return j;
 }
 
 }  // namespace dda::df::test

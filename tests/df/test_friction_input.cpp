@@ -15,6 +15,8 @@
 namespace dda::df {
 namespace {
 
+using test::friction_joint;
+
 namespace fs = std::filesystem;
 
 // One block whose edges belong to set "fault" (0); enough for the joints section.
@@ -112,19 +114,11 @@ ModelInput shaken_slider(const JointProperties& joint) {
   return in;
 }
 
-JointProperties law(const std::string& name, std::map<std::string, double> numbers,
-                    std::map<std::string, std::string> words = {}) {
-  JointProperties j;
-  j.friction_law = name;
-  j.friction_parameters = std::move(numbers);
-  j.friction_options = std::move(words);
-  return j;
-}
-
 // The laws with memory, by name.
 JointProperties law_with_memory(const std::string& name) {
-  if (name == "rate_state") return law("rate_state", {{"mu0", 0.4}, {"a", 0.01}, {"b", 0.015}, {"dc", 1e-3}, {"v0", 1e-3}});
-  return law("degradation", {{"phi_peak", 30}, {"phi_residual", 15}, {"nc", 2}}, {{"measure", "cycles"}});
+  if (name == "rate_state")
+    return friction_joint("rate_state", {{"mu0", 0.4}, {"a", 0.01}, {"b", 0.015}, {"dc", 1e-3}, {"v0", 1e-3}});
+  return friction_joint("degradation", {{"phi_peak", 30}, {"phi_residual", 15}, {"nc", 2}}, {{"measure", "cycles"}});
 }
 
 class FrictionCheckpoint : public ::testing::TestWithParam<std::string> {};

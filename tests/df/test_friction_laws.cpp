@@ -15,19 +15,12 @@
 namespace dda::df {
 namespace {
 
-JointProperties joint(const std::string& law, std::map<std::string, double> numbers,
-                      std::map<std::string, std::string> words = {}) {
-  JointProperties j;
-  j.friction_law = law;
-  j.friction_parameters = std::move(numbers);
-  j.friction_options = std::move(words);
-  return j;
-}
+using test::friction_joint;
 
 // mu0 = 0.6, a = 0.01, b = 0.015, Dc = 1e-4 m, V0 = 1e-6 m/s (typical
 // laboratory values, velocity weakening: a - b = -0.005).
 JointProperties rate_state(const std::string& evolution) {
-  return joint("rate_state", {{"mu0", 0.6}, {"a", 0.01}, {"b", 0.015}, {"dc", 1e-4}, {"v0", 1e-6}},
+  return friction_joint("rate_state", {{"mu0", 0.6}, {"a", 0.01}, {"b", 0.015}, {"dc", 1e-4}, {"v0", 1e-6}},
                {{"evolution", evolution}});
 }
 
@@ -143,7 +136,7 @@ TEST(FrictionLaws, AgingAndSlipLawsReachTheSameSteadyState) {
 
 TEST(FrictionLaws, StribeckLimits) {
   // mu(0) = mu_s, mu(v_s) = mu_k + (mu_s - mu_k) / e, mu(20 v_s) = mu_k to 2e-10.
-  const StribeckFriction law(joint("stribeck", {{"mu_s", 0.6}, {"mu_k", 0.5}, {"v_s", 1e-3}}));
+  const StribeckFriction law(friction_joint("stribeck", {{"mu_s", 0.6}, {"mu_k", 0.5}, {"v_s", 1e-3}}));
   EXPECT_DOUBLE_EQ(law.mu(0), 0.6);
   EXPECT_NEAR(law.mu(1e-3), 0.5 + 0.1 / std::exp(1.0), 1e-15);
   EXPECT_NEAR(law.mu(2e-2), 0.5, 1e-9);
@@ -154,30 +147,31 @@ TEST(FrictionLaws, StribeckViscousBranch) {
   // mu_v = 1 s/m: mu(0.1 m/s) = 0.5 + 0.1 e^-10 + 0.1 = 0.6000045; the
   // slope mu_v - (mu_s - mu_k)/v_s e^(-V/v_s) vanishes at
   // V_cr = 0.01 ln(0.1 / (1 x 0.01)) = 0.0230259 m/s (hand-computed).
-  const StribeckFriction law(joint("stribeck", {{"mu_s", 0.6}, {"mu_k", 0.5}, {"v_s", 1e-2}, {"mu_v", 1.0}}));
+  const StribeckFriction law(friction_joint("stribeck", {{"mu_s", 0.6}, {"mu_k", 0.5}, {"v_s", 1e-2}, {"mu_v", 1.0}}));
   EXPECT_NEAR(law.mu(0.1), 0.5 + 0.1 * std::exp(-10.0) + 0.1, 1e-15);
   EXPECT_NEAR(law.critical_speed(), 0.0230259, 1e-7);
   const double h = 1e-7, v = law.critical_speed();
   EXPECT_NEAR((law.mu(v + h) - law.mu(v - h)) / (2 * h), 0.0, 1e-6);
   // Without the viscous branch the slope never turns: no stable speed.
-  const StribeckFriction plain(joint("stribeck", {{"mu_s", 0.6}, {"mu_k", 0.5}, {"v_s", 1e-2}}));
+  const StribeckFriction plain(friction_joint("stribeck", {{"mu_s", 0.6}, {"mu_k", 0.5}, {"v_s", 1e-2}}));
   EXPECT_TRUE(std::isinf(plain.critical_speed()));
 }
 
 TEST(FrictionLaws, LogLinearIsFlooredAndNeverNegative) {
   // mu = 0.5 + s ln(V / 1e-3), floored at v_min = 1e-6.
-  const LogLinearFriction weak(joint("log_linear", {{"mu_ref", 0.5}, {"s", -0.02}, {"v_ref", 1e-3}, {"v_min", 1e-6}}));
+  const LogLinearFriction weak(
+      friction_joint("log_linear", {{"mu_ref", 0.5}, {"s", -0.02}, {"v_ref", 1e-3}, {"v_min", 1e-6}}));
   EXPECT_NEAR(weak.mu(1e-3), 0.5, 1e-15);
   EXPECT_NEAR(weak.mu(1e-1), 0.5 - 0.02 * std::log(100.0), 1e-15);
   EXPECT_NEAR(weak.mu(0), 0.5 + 0.02 * std::log(1000.0), 1e-15);  // floor
   EXPECT_EQ(weak.mu(1e30), 0.0);                                   // weakening stops at 0
-  const LogLinearFriction strong(joint("log_linear", {{"mu_ref", 0.5}, {"s", 0.02}, {"v_ref", 1e-3}}));
+  const LogLinearFriction strong(friction_joint("log_linear", {{"mu_ref", 0.5}, {"s", 0.02}, {"v_ref", 1e-3}}));
   EXPECT_GT(strong.mu(1e-2), strong.mu(1e-3));
 }
 
 TEST(FrictionLaws, SlipWeakeningReachesMuDAtDc) {
   // mu_s = 0.7 -> mu_d = 0.4 over Dc = 0.01 m: 0.55 half way, 0.4 at and beyond Dc.
-  const SlipWeakeningFriction law(joint("slip_weakening", {{"mu_s", 0.7}, {"mu_d", 0.4}, {"dc", 0.01}}));
+  const SlipWeakeningFriction law(friction_joint("slip_weakening", {{"mu_s", 0.7}, {"mu_d", 0.4}, {"dc", 0.01}}));
   EXPECT_DOUBLE_EQ(law.mu(0), 0.7);
   EXPECT_NEAR(law.mu(0.005), 0.55, 1e-15);
   EXPECT_NEAR(law.mu(0.01), 0.4, 1e-15);
@@ -189,7 +183,7 @@ TEST(FrictionLaws, SlipWeakeningReachesMuDAtDc) {
 
 TEST(FrictionLaws, DegradationIsMonotoneToResidual) {
   // With slip: phi = 20 + 20 exp(-D / 0.05) (degrees), from 40 to 20.
-  JointProperties j = joint("degradation", {{"phi_residual", 20}, {"dc", 0.05}});
+  JointProperties j = friction_joint("degradation", {{"phi_residual", 20}, {"dc", 0.05}});
   j.friction_deg = 40;  // phi_peak defaults to the set's friction angle
   const DegradationFriction by_slip(j);
   double last = 90;
@@ -205,7 +199,7 @@ TEST(FrictionLaws, DegradationIsMonotoneToResidual) {
 
   // With cycles (nc = 2): slip +, -, +, - is 3 reversals = 1.5 cycles;
   // sticking (sign 0) and sliding on in the same direction are not reversals.
-  const DegradationFriction by_cycles(joint("degradation", {{"phi_peak", 40}, {"phi_residual", 20}, {"nc", 2}},
+  const DegradationFriction by_cycles(friction_joint("degradation", {{"phi_peak", 40}, {"phi_residual", 20}, {"nc", 2}},
                                             {{"measure", "cycles"}}));
   FrictionState s;
   FrictionInput in = at_speed(0.1, 1e-3, 1.0);
@@ -222,8 +216,9 @@ TEST(FrictionLaws, DegradationIsMonotoneToResidual) {
 
 TEST(FrictionLaws, CohesionAndTensionAreTheSameForEveryLaw) {
   // Strength = mu N + c l while bonded; nothing frictional in tension.
-  for (JointProperties j : {joint("stribeck", {{"mu_s", 0.6}, {"mu_k", 0.5}, {"v_s", 1e-3}}), rate_state("aging"),
-                            joint("slip_weakening", {{"mu_s", 0.6}, {"mu_d", 0.4}, {"dc", 0.01}})}) {
+  for (JointProperties j : {friction_joint("stribeck", {{"mu_s", 0.6}, {"mu_k", 0.5}, {"v_s", 1e-3}}),
+                           rate_state("aging"),
+                           friction_joint("slip_weakening", {{"mu_s", 0.6}, {"mu_d", 0.4}, {"dc", 0.01}})}) {
     j.cohesion = 1000;
     const auto law = make_friction_law(j);
     FrictionInput in = at_speed(0, 1e-3, -50);
@@ -255,9 +250,10 @@ TEST(FrictionLaws, BadParametersAreInputErrors) {
   EXPECT_EQ(error_of(j), "a: Friction law rate_state: parameter a is required (1).");
   j.friction_parameters["A"] = 0.01;
   EXPECT_NE(error_of(j).find("is not a number the law reads"), std::string::npos);
-  EXPECT_NE(error_of(joint("stribeck", {{"mu_s", 0.5}, {"mu_k", 0.6}, {"v_s", 1}})).find("mu_k must not exceed mu_s"),
+  EXPECT_NE(error_of(friction_joint("stribeck", {{"mu_s", 0.5}, {"mu_k", 0.6}, {"v_s", 1}}))
+                .find("mu_k must not exceed mu_s"),
             std::string::npos);
-  EXPECT_NE(error_of(joint("degradation", {{"phi_peak", 30}, {"phi_residual", 20}, {"dc", 1}, {"nc", 2}}))
+  EXPECT_NE(error_of(friction_joint("degradation", {{"phi_peak", 30}, {"phi_residual", 20}, {"dc", 1}, {"nc", 2}}))
                 .find("nc does not apply with measure slip"),
             std::string::npos);
   JointProperties unknown;

@@ -36,23 +36,17 @@ namespace fs = std::filesystem;
 // these runs, so a block slides on the 40-degree plane below (tan 40 = 0.84).
 const std::map<std::string, JointProperties>& example_joints() {
   static const std::map<std::string, JointProperties> joints = [] {
-    auto law = [](const std::string& name, std::map<std::string, double> numbers,
-                  std::map<std::string, std::string> words = {}) {
-      JointProperties j;
-      j.friction_law = name;
-      j.friction_parameters = std::move(numbers);
-      j.friction_options = std::move(words);
-      return j;
-    };
     std::map<std::string, JointProperties> m;
-    m["coulomb"] = law("coulomb", {});  // friction_deg 30 (its default)
-    m["log_linear"] = law("log_linear", {{"mu_ref", 0.6}, {"s", -0.01}});
+    m["coulomb"] = test::friction_joint("coulomb", {});  // friction_deg 30 (its default)
+    m["log_linear"] = test::friction_joint("log_linear", {{"mu_ref", 0.6}, {"s", -0.01}});
     m["rate_state"] =
-        law("rate_state", {{"mu0", 0.6}, {"a", 0.01}, {"b", 0.015}, {"dc", 1e-4}, {"v0", 1e-6}}, {{"evolution", "aging"}});
-    m["stribeck"] = law("stribeck", {{"mu_s", 0.6}, {"mu_k", 0.4}, {"v_s", 0.01}});
-    m["slip_weakening"] = law("slip_weakening", {{"mu_s", 0.6}, {"mu_d", 0.4}, {"dc", 1e-3}});
+        test::friction_joint("rate_state", {{"mu0", 0.6}, {"a", 0.01}, {"b", 0.015}, {"dc", 1e-4}, {"v0", 1e-6}},
+                             {{"evolution", "aging"}});
+    m["stribeck"] = test::friction_joint("stribeck", {{"mu_s", 0.6}, {"mu_k", 0.4}, {"v_s", 0.01}});
+    m["slip_weakening"] = test::friction_joint("slip_weakening", {{"mu_s", 0.6}, {"mu_d", 0.4}, {"dc", 1e-3}});
     m["degradation"] =
-        law("degradation", {{"phi_peak", 35}, {"phi_residual", 22}, {"dc", 1e-3}}, {{"measure", "slip"}});
+        test::friction_joint("degradation", {{"phi_peak", 35}, {"phi_residual", 22}, {"dc", 1e-3}},
+                             {{"measure", "slip"}});
     return m;
   }();
   return joints;
