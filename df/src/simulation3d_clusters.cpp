@@ -52,6 +52,10 @@ bool Simulation3::settle_clusters(double dt, std::vector<Vector12d>& d, std::vec
           block_of_free[static_cast<std::size_t>(sim.dof_[b] / kDofs)] = static_cast<int>(b);
           x_all.segment<kDofs>(sim.dof_[b]) = d[b];
         }
+      // K's pattern is fixed for the attempt (its contacts are), so the row
+      // index is built once; the values are read live as the rounds swap
+      // springs into K.
+      rows.bind(sim.k_lower_, /*coupling_blocks=*/false);
     }
 
     int block_count() const { return static_cast<int>(block_of_free.size()); }
@@ -70,7 +74,6 @@ bool Simulation3::settle_clusters(double dt, std::vector<Vector12d>& d, std::vec
       else
         sim.swap_springs(changed);
       changed.clear();
-      rows.bind(sim.k_lower_, /*coupling_blocks=*/false);
     }
 
     bool solve_on(const std::vector<int>& cluster, const std::vector<int>& its_contacts) {
