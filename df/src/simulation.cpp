@@ -11,6 +11,7 @@
 #include <tuple>
 
 #include "block_terms.hpp"
+#include "open_close.hpp"
 #include "step_control.hpp"
 #include "dda/df/contact_detection.hpp"
 
@@ -344,97 +345,98 @@ bool Simulation::open_close(double dt, std::vector<Contact>& contacts, Eigen::Ve
   sc.unsettled.resize(contacts.size());
   sc.blocks.resize(contacts.size());
   std::vector<double> friction;
-  // Trial solves (linear_solver.hpp) while the states change; an iterate
-  // that settles on a trial solve is solved again at full accuracy and
-  // checked once more, and the last iterate allowed is always a full solve.
   // After a quiet step the first solve is a full one (quiet_step).
-  bool trial = trial_first;
   moved_blocks_.start(block_radii());
   const TrialScope trial_scope(*solver_);
   // The start-up relaxation has no shorter step to fall back on, so it may
   // iterate longer than a step (settle.cpp).
   const int limit = settling_ ? std::max(kSettleOpenClose, model_.control.max_open_close) : model_.control.max_open_close;
-  for (iterations = 1; iterations <= limit; ++iterations) {
-    {
-      const ScopedTimer timer(timings_.assembly);
-      // Swapping a spring costs twice adding it: when many contacts changed
-      // (the first iterate after a blast of new contacts) the whole system
-      // is assembled afresh instead.
-      if (iterations == 1 || 8 * sc.changed > static_cast<long>(contacts.size())) {
-        assemble(dt, contacts, friction);
-      } else {
-        reassemble(dt, contacts, sc, friction);
+
+  // The 2D kernel of the open-close driver (open_close.hpp, where the rules
+  // of the iteration are); a local class has the member function's access.
+  struct Kernel2d {
+    Simulation& sim;
+    double dt;
+    std::vector<Contact>& contacts;
+    Eigen::VectorXd& d;
+    std::vector<std::uint8_t>& changes;
+    std::vector<double>& friction;
+
+    bool solve(int iteration, bool trial) {
+      StateChanges& sc = sim.state_changes_;
+      {
+        const ScopedTimer timer(sim.timings_.assembly);
+        // Swapping a spring costs twice adding it: when many contacts changed
+        // (the first iterate after a blast of new contacts) the whole system
+        // is assembled afresh instead.
+        if (iteration == 1 || 8 * sc.changed > static_cast<long>(contacts.size())) {
+          sim.assemble(dt, contacts, friction);
+        } else {
+          sim.reassemble(dt, contacts, sc, friction);
+        }
       }
+      const ScopedTimer timer(sim.timings_.solve);
+      sim.solver_->set_trial(trial);
+      d = sim.solver_->solve_step(sim.system_, dt);
+      ++sim.timings_.solves;
+      return sim.solver_->last_was_trial();
     }
-    {
-      const ScopedTimer timer(timings_.solve);
-      solver_->set_trial(trial && iterations < limit);
-      d = solver_->solve_step(system_, dt);
-      ++timings_.solves;
-    }
-    const bool was_trial = solver_->last_was_trial();
-    bool changed = false, friction_lags = false;
-    {
-      const ScopedTimer timer(timings_.contact_update);
-      // After the first solve of an attempt and after a full solve every
-      // contact is updated, so an accepted step is checked whole. After a
-      // later trial solve only the contacts that can differ are: those of a
-      // block that moved more than a thousandth of the dead band since its
-      // contacts were last updated (Model::contact_update_tolerance,
-      // moved_blocks.hpp), those whose state changed in the last update and
-      // those whose friction lags. Another contact's state could flip only
-      // if it sat on the edge of the band to within that thousandth, far
-      // inside the error of a trial solve, and the full solve that ends the
-      // iteration updates it anyway; its forces lag by at most pn times that
-      // distance meanwhile. (Updating every contact after every solve was a
-      // sixth of a 10k-block transient step.)
-      const bool every = iterations == 1 || !was_trial;
-      moved_blocks_.mark(d, model_.contact_update_tolerance, every);
-      // Each contact updates only itself: in parallel (|| is order-free).
+
+    bool update_contacts(int iteration, bool every) {
+      StateChanges& sc = sim.state_changes_;
+      const ScopedTimer timer(sim.timings_.contact_update);
+      // After a trial solve (not the first) only the contacts that can
+      // differ are updated: those of a block that moved more than a
+      // thousandth of the dead band since its contacts were last updated
+      // (Model::contact_update_tolerance, moved_blocks.hpp), those whose
+      // state changed in the last update and those whose friction lags.
+      // Another contact's state could flip only if it sat on the edge of the
+      // band to within that thousandth, far inside the error of a trial
+      // solve, and the full solve that ends the iteration updates it anyway;
+      // its forces lag by at most pn times that distance meanwhile.
+      // (Updating every contact after every solve was a sixth of a 10k-block
+      // transient step.)
+      sim.moved_blocks_.mark(d, sim.model_.contact_update_tolerance, every);
+      bool changed = false, friction_lags = false;
       long updated = 0, changed_count = 0;
-#pragma omp parallel for schedule(static) reduction(|| : changed, friction_lags) reduction(+ : updated, changed_count) if (model_.block_count() > parallel_grain())
+      // Each contact updates only itself: in parallel (|| is order-free).
+#pragma omp parallel for schedule(static) reduction(|| : changed, friction_lags) reduction(+ : updated, changed_count) if (sim.model_.block_count() > parallel_grain())
       for (std::size_t k = 0; k < contacts.size(); ++k) {
         // Decided from compact arrays: the contact itself is not read.
-        if (!every && !sc.unsettled[k] && !moved_blocks_.moved(sc.blocks[k].first) &&
-            !moved_blocks_.moved(sc.blocks[k].second)) {
+        if (!every && !sc.unsettled[k] && !sim.moved_blocks_.moved(sc.blocks[k].first) &&
+            !sim.moved_blocks_.moved(sc.blocks[k].second)) {
           sc.revisit[k] = 0;  // its forces, hence its friction, are those of the last update
           continue;
         }
         if (every) sc.blocks[k] = {contacts[k].vblock, contacts[k].eblock};
         ++updated;
-        const ContactUpdate u = update_one(k, contacts, d, dt, changes);
+        const ContactUpdate u = sim.update_one(k, contacts, d, dt, changes);
         changed = changed || u.flipped;
         friction_lags = friction_lags || u.lags;
         changed_count += u.moved;
       }
-      timings_.contact_updates += updated;
+      sim.timings_.contact_updates += updated;
       sc.changed = changed_count;
+      // The friction agreement is a fixed-point iteration that converges
+      // linearly (thousands of sliding contacts on a layered model take 20+
+      // iterations to agree to 0.1 %), so once the states hold, the last
+      // iteration's friction is accepted rather than cutting dt for it; on
+      // small models it agrees long before.
+      return !changed && !friction_lags;
     }
-    // Settled: no contact changed state and the friction of every sliding
-    // contact agrees with its normal force. The friction agreement is a
-    // fixed-point iteration that converges linearly (thousands of sliding
-    // contacts on a layered model take 20+ iterations to agree to 0.1 %), so
-    // once the states hold, the last iteration's friction is accepted
-    // rather than cutting dt for it; on small models it agrees long before.
-    if (!changed && !friction_lags) {
-      if (!was_trial) return true;
-      trial = false;
-      continue;
+
+    bool gives_up() const { return false; }
+
+    bool settle_clusters() {
+      const bool settled = sim.settle_clusters(dt, contacts, d, changes, friction);
+      sim.solver_->set_warm_start({d, dt});
+      return settled;
     }
-    if (model_.control.contact_clusters && iterations < limit) {
-      // The changes settled on the blocks around them: the next global
-      // solve checks them, at full accuracy (contact_clusters.hpp).
-      const bool settled = settle_clusters(dt, contacts, d, changes, friction);
-      solver_->set_warm_start({d, dt});
-      if (settled) {
-        trial = false;
-        continue;
-      }
-    }
-    if (iterations == 1) trial = true;  // a full first solve (trial_first false) that did not settle: trials from here
-  }
-  iterations = limit;
-  return false;
+  };
+  static_assert(OpenCloseKernel<Kernel2d>);
+  Kernel2d kernel{*this, dt, contacts, d, changes, friction};
+  const OpenCloseRules rules{limit, trial_first, model_.control.contact_clusters};
+  return iterate_open_close(kernel, rules, iterations);
 }
 
 void Simulation::restore_iteration_states() {

@@ -3,6 +3,7 @@
 #include "dda/df/simulation3d.hpp"
 
 #include "contact_coupling3.hpp"
+#include "open_close.hpp"
 #include "simulation3d_assembly.hpp"
 #include "start_up_relax.hpp"
 #include "step_control.hpp"
@@ -301,11 +302,6 @@ bool Simulation3::iterate(double dt, std::vector<Vector12d>& d, int& iterations)
   index_ranges();
   coupling_->set_springs(contacts_, dof_, model_.normal_penalty, model_.shear_penalty);
   std::vector<int> changes(contacts_.size(), 0);  // state changes of each contact in this step
-  iterations = 0;
-  // Trial solves (linear_solver.hpp) while the states change; an iterate
-  // that settles on a trial solve is solved again at full accuracy and
-  // checked once more, and the last iterate allowed is always a full solve.
-  bool trial = true;
   const df::TrialScope trial_scope(*solver_);
   // The contacts whose state the last update changed, with the state they
   // were assembled in: the next iterate swaps only their springs.
@@ -316,48 +312,67 @@ bool Simulation3::iterate(double dt, std::vector<Vector12d>& d, int& iterations)
   // iterate longer than a step (start_up.hpp).
   const int limit = settling_ ? std::max(df::kSettleOpenClose, model_.max_iterations) : model_.max_iterations;
   df::FrictionRunaway runaway;  // while settling (start_up_relax.hpp)
-  while (iterations < limit) {
-    ++iterations;
-    solver_->set_trial(trial && iterations < limit);
-    d = solve(dt, iterations == 1 ? nullptr : &changed);
-    changed.clear();
-    const bool was_trial = solver_->last_was_trial();
-    for (size_t b = 0; b < d.size(); ++b)
-      if (dof_[b] < 0) d[b] = known_[b];
-    // Each contact updates only itself, in parallel; `before` keeps the
-    // state it was assembled in, for the list of changes (contact order).
-    bool settled = true;
+
+  // The 3D kernel of the open-close driver (open_close.hpp, where the rules
+  // of the iteration are); a local class has the member function's access.
+  struct Kernel3d {
+    Simulation3& sim;
+    double dt;
+    std::vector<Vector12d>& d;
+    std::vector<int>& changes;
+    std::vector<std::pair<int, ContactState3>>& changed;
+    std::vector<ContactState3>& before;
+    std::vector<std::uint8_t>& unsettled;
+    df::FrictionRunaway& runaway;
     double friction_change = 0;  // the largest of a contact sliding before and after (a maximum: in any order)
-    const int nc = static_cast<int>(contacts_.size());
-#pragma omp parallel for schedule(static) reduction(&& : settled) reduction(max : friction_change) if (nc > 20 * df::parallel_grain())
-    for (int k = 0; k < nc; ++k) {
-      Contact3& c = contacts_[static_cast<std::size_t>(k)];
-      before[static_cast<std::size_t>(k)] = c.state;
-      const double friction_used = c.strength;
-      bool friction_settled = true;
-      const ContactState3 s =
-          update_contact3(c, model_, law_of(c), dt, d[c.i], d[c.j], changes[k] >= 2, friction_settled);
-      settled = settled && friction_settled && s == c.state;
-      unsettled[static_cast<std::size_t>(k)] = !friction_settled || s != c.state;
-      if (s == ContactState3::Sliding && c.state == ContactState3::Sliding)
-        friction_change = std::max(friction_change, std::abs(c.strength - friction_used));
-      if (s != c.state) ++changes[k];
-      c.state = s;
+
+    bool solve(int iteration, bool trial) {
+      sim.solver_->set_trial(trial);
+      d = sim.solve(dt, iteration == 1 ? nullptr : &changed);
+      changed.clear();
+      for (size_t b = 0; b < d.size(); ++b)
+        if (sim.dof_[b] < 0) d[b] = sim.known_[b];
+      return sim.solver_->last_was_trial();
     }
-    for (int k = 0; k < nc; ++k)
-      if (contacts_[static_cast<std::size_t>(k)].state != before[static_cast<std::size_t>(k)])
-        changed.emplace_back(k, before[static_cast<std::size_t>(k)]);
-    if (settled) {
-      if (!was_trial) return true;
-      trial = false;
-    } else if (settling_ && runaway.diverging(!changed.empty(), friction_change)) {
-      break;
-    } else if (model_.control.contact_clusters && iterations < limit &&
-               settle_clusters(dt, d, changes, changed, unsettled)) {
-      trial = false;  // the next global solve checks the clusters' states, at full accuracy
+
+    // Every contact is updated after every solve (`every` is not needed).
+    bool update_contacts(int, bool) {
+      std::vector<Contact3>& contacts = sim.contacts_;
+      // Each contact updates only itself, in parallel; `before` keeps the
+      // state it was assembled in, for the list of changes (contact order).
+      bool settled = true;
+      double most = 0;
+      const int nc = static_cast<int>(contacts.size());
+#pragma omp parallel for schedule(static) reduction(&& : settled) reduction(max : most) if (nc > 20 * df::parallel_grain())
+      for (int k = 0; k < nc; ++k) {
+        Contact3& c = contacts[static_cast<std::size_t>(k)];
+        before[static_cast<std::size_t>(k)] = c.state;
+        const double friction_used = c.strength;
+        bool friction_settled = true;
+        const ContactState3 s =
+            update_contact3(c, sim.model_, sim.law_of(c), dt, d[c.i], d[c.j], changes[k] >= 2, friction_settled);
+        settled = settled && friction_settled && s == c.state;
+        unsettled[static_cast<std::size_t>(k)] = !friction_settled || s != c.state;
+        if (s == ContactState3::Sliding && c.state == ContactState3::Sliding)
+          most = std::max(most, std::abs(c.strength - friction_used));
+        if (s != c.state) ++changes[k];
+        c.state = s;
+      }
+      friction_change = most;
+      for (int k = 0; k < nc; ++k)
+        if (contacts[static_cast<std::size_t>(k)].state != before[static_cast<std::size_t>(k)])
+          changed.emplace_back(k, before[static_cast<std::size_t>(k)]);
+      return settled;
     }
-  }
-  return false;  // d is from states one update behind the stored ones
+
+    bool gives_up() { return sim.settling_ && runaway.diverging(!changed.empty(), friction_change); }
+
+    bool settle_clusters() { return sim.settle_clusters(dt, d, changes, changed, unsettled); }
+  };
+  static_assert(df::OpenCloseKernel<Kernel3d>);
+  Kernel3d kernel{*this, dt, d, changes, changed, before, unsettled, runaway};
+  const df::OpenCloseRules rules{limit, true, model_.control.contact_clusters};
+  return df::iterate_open_close(kernel, rules, iterations);  // if not settled, d is from states one update behind the stored ones
 }
 
 double Simulation3::max_vertex_displacement(const std::vector<Vector12d>& d) const {
