@@ -5,6 +5,7 @@
 #include <string>
 
 #include "dda/common/error.hpp"
+#include "dda/common/short_number.hpp"
 #include "dda/df/free_field.hpp"
 #include "dda/df/lysmer_dashpot.hpp"
 #include "dda/df/time_step.hpp"
@@ -91,6 +92,19 @@ void check_viscous_boundary3(const ViscousBoundary3& v, const std::vector<Polyhe
                        " does not exist.");
   }
   if (!v.incident_velocity.t.empty()) v.incident_velocity.check(what + ", incident velocity");
+  bool free_field = false;
+  for (const ViscousFace3& f : v.faces) {
+    if (f.input && f.free_field)
+      throw InputError(what + ": face " + std::to_string(f.face) + " of block " + std::to_string(f.block) +
+                       " is both an input face and a free-field face; the wave enters at the base, the free field "
+                       "stands on the sides.");
+    free_field = free_field || f.free_field;
+  }
+  // The free field is a wave going up from the base and back down from the
+  // surface: a surface at or below the base has none.
+  if (free_field && !(v.surface_z > v.base_z))
+    throw InputError(what + ": the free field's surface (z = " + short_number(v.surface_z) +
+                     " m) must lie above its base (z = " + short_number(v.base_z) + " m).");
 }
 
 }  // namespace dda::df3

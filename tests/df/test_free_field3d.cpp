@@ -32,6 +32,7 @@
 #include "dda/df/viscous_boundary.hpp"
 #include "wave_test_models.hpp"
 #include "wave_test_models3.hpp"
+#include "../common/input_error_of.hpp"
 
 namespace dda::df3 {
 namespace {
@@ -233,6 +234,21 @@ TEST(FreeField3, LedgerBalances) {
   EXPECT_GT(last.residual, 0);
   EXPECT_LT(last.residual, 0.03 * last.load_work);
   RecordProperty("residual_over_work", std::to_string(last.residual / last.load_work));
+}
+
+// A model built in code is checked as a scenario is: a face cannot be
+// both the wave's entry and a free-field side, and the free field needs
+// its surface above its base.
+TEST(FreeField3, ModelMistakesAreRefused) {
+  Model3 m = layer3(Vec3(1, 0, 0), true);
+  m.viscous->surface_z = m.viscous->base_z;
+  EXPECT_EQ(dda::testing::input_error_of([&] { Simulation3 sim(m); }),
+            "Model3 viscous boundary: the free field's surface (z = 0 m) must lie above its base (z = 0 m).");
+  m = layer3(Vec3(1, 0, 0), true);
+  m.viscous->faces[0].free_field = true;  // the base face of block 0, an input face
+  EXPECT_EQ(dda::testing::input_error_of([&] { Simulation3 sim(m); }),
+            "Model3 viscous boundary: face 0 of block 0 is both an input face and a free-field face; the wave "
+            "enters at the base, the free field stands on the sides.");
 }
 
 }  // namespace
