@@ -65,7 +65,8 @@ Model3 layer3(const Vec3& dir, bool free_field) {
   for (int k = 0; k < kPlates; ++k)
     for (int j = 0; j < kColumns; ++j) {
       // Box faces: 0 bottom, 1 top, 2 south, 3 north, 4 west, 5 east.
-      m.blocks.push_back(testing::box(Vec3(j * kWidth, 0, k * kHeight), Vec3((j + 1) * kWidth, kWidth, (k + 1) * kHeight)));
+      m.blocks.push_back(
+          testing::box(Vec3(j * kWidth, 0, k * kHeight), Vec3((j + 1) * kWidth, kWidth, (k + 1) * kHeight)));
       if (k == 0) v.faces.push_back({id(j, k), 0, true});
       for (const int side : {2, 3}) v.faces.push_back({id(j, k), side, false, free_field});
       if (j == 0) v.faces.push_back({id(j, k), 4, false, free_field});
