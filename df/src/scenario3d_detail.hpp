@@ -100,10 +100,14 @@ MaterialsSpec3 read_materials3(const YamlNode& root);
 void assign_materials3(const MaterialsSpec3& spec, const PolyhedronModel& blocks, const std::string& blocks_path,
                        Model3& m);
 
-// boundaries.viscous (scenario3d_waves.cpp): the sides, checked; then their
-// faces into m.viscous, with the earthquake's incident wave when its mode is
-// incident (needs m.earthquake and m.control.dt).
-std::vector<std::string> read_viscous_sides3(const YamlNode& root);
+// boundaries.viscous and boundaries.free_field (scenario3d_waves.cpp): the
+// sides, checked; then their faces into m.viscous, with the earthquake's
+// incident wave when its mode is incident (needs m.earthquake and
+// m.control.dt).
+struct BoundarySides3 {
+  std::vector<std::string> viscous, free_field;
+};
+BoundarySides3 read_viscous_sides3(const YamlNode& root);
 void add_viscous_boundary3(const YamlNode& root, const PolyhedronModel& blocks, const std::string& blocks_path,
                            Model3& m);
 

@@ -25,11 +25,11 @@ void Simulation3::check_viscous() const {
                      "and the model has none (add the bottom to boundaries.viscous).");
 }
 
-Vec3 Simulation3::incident_velocity(double dt) const {
-  const History3& v = model_.viscous->incident_velocity;
-  // No incident wave, or settling into equilibrium (time stands still).
-  if (v.t.empty() || settling_) return Vec3::Zero();
-  return v.average(time_, time_ + dt);
+FaceTraction Simulation3::face_traction(const ViscousFace3& face, double dt) const {
+  // Settling into equilibrium (time stands still): the dashpots alone.
+  if (settling_) return {};
+  const auto b = static_cast<std::size_t>(face.block);
+  return face_traction3(*model_.viscous, face, model_.blocks[b], model_.material_of(b), time_, time_ + dt);
 }
 
 void Simulation3::add_viscous_terms(double dt, Assembly3& sys) const {
@@ -37,27 +37,27 @@ void Simulation3::add_viscous_terms(double dt, Assembly3& sys) const {
   // no static force, and the start-up relaxation's pseudo steps are not
   // motion.
   if (settling_) return;
-  const Vec3 v_in = incident_velocity(dt);
   // In face order, serially: the sums do not depend on the threads.
   for (const ViscousFace3& face : model_.viscous->faces) {
     const auto b = static_cast<std::size_t>(face.block);
     if (dof_[b] < 0) continue;  // a fixed block has no unknowns
     Matrix12d k = Matrix12d::Zero();
     Vector12d f = Vector12d::Zero();
-    add_viscous_face_terms(model_.blocks[b], face.face, model_.material_of(b), face.input ? v_in : Vec3::Zero(),
-                           dt, k, f);
+    add_viscous_face_terms(model_.blocks[b], face.face, model_.material_of(b), face_traction(face, dt), dt, k, f);
     sys.add_k(face.block, face.block, k);
     sys.add_f(face.block, f);
   }
 }
 
+// As 2D: the dashpots' absorption is radiation, the work of the traction
+// from outside (the incident wave's on the base, the free field's on the
+// sides) counts with the loads.
 void Simulation3::add_viscous_work(const std::vector<Vector12d>& d, double dt, df::EnergyRecord& e) const {
-  const Vec3 v_in = incident_velocity(dt);
   for (const ViscousFace3& face : model_.viscous->faces) {
     const auto b = static_cast<std::size_t>(face.block);
     if (dof_[b] < 0) continue;
-    const ViscousFaceEnergy w = viscous_face_energy(model_.blocks[b], face.face, model_.material_of(b),
-                                                    face.input ? v_in : Vec3::Zero(), d[b], dt);
+    const ViscousFaceEnergy w =
+        viscous_face_energy(model_.blocks[b], face.face, model_.material_of(b), face_traction(face, dt), d[b], dt);
     e.radiation += w.absorbed;
     e.load_work += w.input_work;
   }

@@ -43,25 +43,13 @@ Matrix2d dashpot_matrix(const Material& m, const Vec2& n) {
 
 FreeField free_field(const TimeHistory& incident, const Material& m, double y, double y_base, double y_surface,
                      double t0, double t1) {
-  // Travel times to y of the up-going wave and of its reflection, per
-  // component (x: S, y: P).
-  FreeField ff;
-  const double speed[2] = {s_wave_speed(m), p_wave_speed(m)};
-  for (int k = 0; k < 2; ++k) {
-    const double up = (y - y_base) / speed[k], down = (2 * y_surface - y - y_base) / speed[k];
-    ff.up[k] = incident.average(t0 - up, t1 - up)[k];
-    ff.down[k] = incident.average(t0 - down, t1 - down)[k];
-  }
-  ff.velocity = ff.up + ff.down;
-  return ff;
+  return free_field_motion<2>(incident, s_wave_speed(m), p_wave_speed(m), y, y_base, y_surface, t0, t1);
 }
 
 Vec2 free_field_traction(const FreeField& ff, const Material& m, const Matrix2d& dashpot, const Vec2& n) {
-  const double sxy = m.density * s_wave_speed(m) * (ff.down.x() - ff.up.x());
-  const double syy = m.density * p_wave_speed(m) * (ff.down.y() - ff.up.y());
-  const double sxx = syy * (m.plane == PlaneMode::Strain ? m.poisson / (1 - m.poisson) : m.poisson);
-  const Vec2 stress_n(sxx * n.x() + sxy * n.y(), sxy * n.x() + syy * n.y());
-  return dashpot * ff.velocity + stress_n;
+  // No strain out of the plane in plane strain, no stress in plane stress.
+  const double lateral = m.plane == PlaneMode::Strain ? m.poisson / (1 - m.poisson) : m.poisson;
+  return dashpot * ff.velocity + free_field_stress(ff, m.density, s_wave_speed(m), p_wave_speed(m), lateral) * n;
 }
 
 void add_viscous_edge_terms(int i, const Polygon2& v, const Vec2& c, int edge, const Matrix2d& dashpot,

@@ -1,6 +1,6 @@
-// boundaries.viscous and the earthquake's incident mode in a 3D scenario
-// (scenario3d_waves.cpp, keys in docs/scenario.md): which faces get
-// dashpots, the incident wave the record becomes, one sentence naming the
+// boundaries.viscous, boundaries.free_field and the earthquake's incident
+// mode in a 3D scenario (scenario3d_waves.cpp, keys in docs/scenario.md):
+// which faces get dashpots, the incident wave the record becomes, one sentence naming the
 // file, line and key for each mistake, and a run read from a scenario
 // against the 1D answer.
 #include <gtest/gtest.h>
@@ -137,6 +137,44 @@ TEST(Scenario3dWaves, SidesSelectEveryFaceOnThem) {
   EXPECT_TRUE(s.model.viscous->incident_velocity.t.empty());
 }
 
+// Free-field sides (viscous_boundary3.hpp): every face on them is a
+// free-field face, the base is the input; the free field's base is the
+// bottom of the blocks (z = 0) and its free surface the top of the
+// free-field faces (the 4 plates of 2.5 m: z = 10).
+TEST(Scenario3dWaves, FreeFieldSidesSelectEveryFaceOnThem) {
+  const DfScenario3 s =
+      read(replaced(kScenario, "[bottom, top]", "[bottom]\n  free_field: [west, east, south, north]"));
+  ASSERT_TRUE(s.model.viscous);
+  const ViscousBoundary3& v = *s.model.viscous;
+  ASSERT_EQ(v.faces.size(), 1u + 4 * 4);  // the base, and 4 sides of 4 plates
+  EXPECT_TRUE(v.faces[0].input);
+  EXPECT_FALSE(v.faces[0].free_field);
+  for (std::size_t k = 1; k < v.faces.size(); ++k) {
+    EXPECT_TRUE(v.faces[k].free_field);
+    EXPECT_FALSE(v.faces[k].input);
+  }
+  EXPECT_EQ(v.base_z, 0);
+  EXPECT_EQ(v.surface_z, 10);
+}
+
+TEST(Scenario3dWaves, FreeFieldMistakesNameTheFileLineAndKey) {
+  const std::string without_incident = replaced(kScenario, ", mode: incident", "");
+  EXPECT_EQ(error_of(replaced(without_incident, "[bottom, top]", "[bottom]\n  free_field: [west]")),
+            "s.yaml:9: boundaries.free_field needs an incident wave (loading.earthquake with mode: incident): the "
+            "free field is the motion that wave gives the rock.");
+  EXPECT_EQ(error_of(replaced(kScenario, "[bottom, top]", "[bottom, west]\n  free_field: [east, west]")),
+            "s.yaml:9: boundaries.free_field[1] is also in boundaries.viscous; a side has plain dashpots or "
+            "free-field ones, not both.");
+  EXPECT_EQ(error_of(replaced(kScenario, "[bottom, top]", "[bottom]\n  free_field: [west, up]")),
+            "s.yaml:9: boundaries.free_field[1] must be west, east, south or north (free-field boundaries stand on "
+            "the lateral sides), got 'up'.");
+  EXPECT_EQ(error_of(replaced(kScenario, "[bottom, top]", "[bottom]\n  free_field: [top]")),
+            "s.yaml:9: boundaries.free_field[0] must be west, east, south or north (free-field boundaries stand on "
+            "the lateral sides), got 'top'.");
+  EXPECT_EQ(error_of(replaced(kScenario, "[bottom, top]", "[bottom]\n  free_field: [west, west]")),
+            "s.yaml:9: boundaries.free_field[1] repeats side west.");
+}
+
 TEST(Scenario3dWaves, MistakesNameTheFileLineAndKey) {
   EXPECT_EQ(error_of(replaced(kScenario, "[bottom, top]", "[bottom, up]")),
             "s.yaml:8: boundaries.viscous[1] must be bottom, top, west, east, south or north, got 'up'.");
@@ -148,11 +186,8 @@ TEST(Scenario3dWaves, MistakesNameTheFileLineAndKey) {
   EXPECT_EQ(error_of(replaced(kScenario, "boundaries:\n  viscous: [bottom, top]\n", "")),
             "s.yaml:6: loading.earthquake.mode incident sends the wave in through the viscous base, and "
             "boundaries.viscous does not list bottom (add it there).");
-  EXPECT_EQ(error_of(replaced(kScenario, "  viscous: [bottom, top]", "  viscous: [bottom]\n  free_field: true")),
-            "s.yaml:9: boundaries.free_field is 2D only so far: the 3D solver has plain dashpots "
-            "(boundaries.viscous).");
   EXPECT_EQ(error_of(replaced(kScenario, "  viscous: [bottom, top]", "  viscous: [bottom]\n  dashpots: 2")),
-            "s.yaml:9: unknown key 'boundaries.dashpots'; allowed keys here are viscous.");
+            "s.yaml:9: unknown key 'boundaries.dashpots'; allowed keys here are viscous, free_field.");
   // The incline's base is turned 20 degrees: none of its faces lies on the
   // bottom of the bounding box.
   EXPECT_EQ(error_of(replaced(kScenario, "[bottom, top]", "[bottom]"), testing::incline_blocks()),

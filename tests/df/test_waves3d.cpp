@@ -230,7 +230,7 @@ TEST(Waves3, BaseFaceDashpotsByHand) {
   Matrix12d k = Matrix12d::Zero();
   Vector12d f = Vector12d::Zero();
   const double dt = 0.01;
-  add_viscous_face_terms(p, 0, rock, Vec3::Zero(), dt, k, f);
+  add_viscous_face_terms(p, 0, rock, FaceTraction{}, dt, k, f);
   EXPECT_NEAR(k(2, 2) * dt, 2000 * vp * 25, 1e-6 * 2000 * vp * 25);
   const double rocking = 2000 * vs * 25 * 2.5 * 2.5 / 4 + 2000 * vp * std::pow(5.0, 4) / 12;
   EXPECT_NEAR(k(3, 3) * dt, rocking, 1e-9 * rocking);

@@ -1275,7 +1275,8 @@ PY
 # precompression, and the viscous top sends nothing back: the second plate's
 # centroid moves as the incident wave, half the outcrop motion, peaking at
 # 1e-3 m/s (within 5 %) at 0.05 + 3.75 / 707.1 = 55.3 ms (within 2 %).
-# Then one sentence for a side that is not one.
+# Then one sentence for a side that is not one, and for free-field sides
+# given without an incident wave, on a viscous side or on the top.
 case_df3_incident_wave() {
   cat > col3.yaml <<'YAML'
 name: col3
@@ -1317,6 +1318,18 @@ assert abs(t - 0.0553) <= 0.02 * 0.0553
 PY
   sed 's/  viscous: \[bottom, top\]/  viscous: [bottom, up]/' col3.yaml > bad.yaml
   expect_error 1 "bad.yaml:[0-9]+: boundaries.viscous\[1\] must be bottom, top, west, east, south or north, got 'up'\.$" -- \
+    "$DDA" df bad.yaml --blocks out/blocks3d.h5 -o r.h5
+  # Free-field sides: only with an incident wave, not on a side that also
+  # has plain dashpots, only on the lateral sides.
+  sed -e 's/  viscous: \[bottom, top\]/  viscous: [bottom, top]\n  free_field: [west, east]/' -e 's/ mode: incident,//' \
+    col3.yaml > bad.yaml
+  expect_error 1 "bad.yaml:[0-9]+: boundaries.free_field needs an incident wave \(loading.earthquake with mode: incident\): the free field is the motion that wave gives the rock\.$" -- \
+    "$DDA" df bad.yaml --blocks out/blocks3d.h5 -o r.h5
+  sed 's/  viscous: \[bottom, top\]/  viscous: [bottom, west]\n  free_field: [west]/' col3.yaml > bad.yaml
+  expect_error 1 "bad.yaml:[0-9]+: boundaries.free_field\[0\] is also in boundaries.viscous; a side has plain dashpots or free-field ones, not both\.$" -- \
+    "$DDA" df bad.yaml --blocks out/blocks3d.h5 -o r.h5
+  sed 's/  viscous: \[bottom, top\]/  viscous: [bottom]\n  free_field: [top]/' col3.yaml > bad.yaml
+  expect_error 1 "bad.yaml:[0-9]+: boundaries.free_field\[0\] must be west, east, south or north \(free-field boundaries stand on the lateral sides\), got 'top'\.$" -- \
     "$DDA" df bad.yaml --blocks out/blocks3d.h5 -o r.h5
 }
 

@@ -375,7 +375,8 @@ class Simulation3 {
   // constructor; its dashpots and incident traction in K and F; their
   // energy in the step's ledger record.
   void check_viscous() const;
-  Vec3 incident_velocity(double dt) const;  // v_in's mean over the step (zero while settling)
+  // The traction from outside on a face over the step (empty while settling).
+  FaceTraction face_traction(const ViscousFace3& face, double dt) const;
   void add_viscous_terms(double dt, Assembly3& sys) const;
   void add_viscous_work(const std::vector<Vector12d>& d, double dt, df::EnergyRecord& e) const;
   // Bonds (simulation3d_bonds.cpp): until the first accepted solve, every

@@ -29,16 +29,12 @@
 //   t = D (v_ff - v) + sigma_ff n.
 // Without them a lateral dashpot drags on the plane wave itself (a layer
 // shaken from below loses half its amplitude next to viscous sides) and a
-// free side lacks the plane wave's stresses. For a base at y_b, a free
-// surface at y_s and the incident velocity v_in(t) (components along x: an
-// S wave at Vs; along y: a P wave at Vp), at height y:
-//   v_ff = v_in(t - (y - y_b)/c) + v_in(t - (2 y_s - y - y_b)/c)
-// (up-going plus its reflection from the free surface, which leaves
-// through the absorbing base), and with v_up, v_dn those two terms
-//   sigma_xy = rho Vs (v_dn,x - v_up,x),  sigma_yy = rho Vp (v_dn,y - v_up,y),
-//   sigma_xx = sigma_yy nu / (1 - nu) (plane strain; nu in plane stress)
-// (no lateral strain in a plane wave). The free field is that of one
-// uniform material, the edge's own: the sides must stand in uniform rock.
+// free side lacks the plane wave's stresses. v_ff and sigma_ff are
+// free_field.hpp's (shared with 3D): from a base at y_b and a free surface
+// at y_s, the x component of v_in an S wave at Vs, the y component a P wave
+// at Vp; sigma_xx = sigma_yy nu / (1 - nu) in plane strain, nu sigma_yy in
+// plane stress. The free field is that of one uniform material, the edge's
+// own: the sides must stand in uniform rock.
 //
 // In the step: DDA integrates with constant acceleration, so the mean
 // velocity over the step is v = T d / dt. The dashpot force is taken at
@@ -54,6 +50,7 @@
 #include <functional>
 
 #include "dda/df/block_kinematics.hpp"
+#include "dda/df/free_field.hpp"
 #include "dda/df/model.hpp"
 
 namespace dda::df {
@@ -74,10 +71,7 @@ using EdgeTraction = std::function<Vec2(const Vec2& point)>;
 
 // The incident wave's free field at height y, mean over [t0, t1]
 // (free_field_traction() evaluates D v_ff + sigma_ff n from it).
-struct FreeField {
-  Vec2 velocity{0, 0};   // v_ff
-  Vec2 up{0, 0}, down{0, 0};  // its up- and down-going parts
-};
+using FreeField = FreeFieldMotion<2>;
 FreeField free_field(const TimeHistory& incident, const Material& m, double y, double y_base, double y_surface,
                      double t0, double t1);
 Vec2 free_field_traction(const FreeField& ff, const Material& m, const Matrix2d& dashpot, const Vec2& outward_normal);
