@@ -185,7 +185,7 @@ control: {dt: 0.002, total_time: 0.1, damping: {ratio: 0.05, frequency: 10}}
 control: {dt: 0.002, total_time: 0.1}
 )",
       R"(loading:
-  earthquake: {record: )" + kRecord + R"(, filter: {type: lowpass, corner: 2.5}}
+  earthquake: {record: )" + kRecord + R"(, mode: incident, filter: {type: lowpass, corner: 2.5}}
 boundaries: {viscous: [bottom], free_field: [left, right]}
 control: {dt: 0.002, total_time: 0.1}
 )",

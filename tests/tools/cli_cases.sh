@@ -919,6 +919,10 @@ PY
   sed 's/  viscous: \[bottom\]/  viscous: [bottom, middle]/' column.yaml > bad.yaml
   expect_error 1 "bad.yaml:[0-9]+: boundaries.viscous.*must be bottom, top, left or right, got 'middle'\.$" -- \
     "$DDA" df bad.yaml --blocks out/blocks.h5 -o r.h5
+  # Free-field sides without an incident wave (as 3D refuses them).
+  sed -e 's/  viscous: \[bottom\]/  viscous: [bottom]\n  free_field: [left]/' -e 's/mode: incident, //' column.yaml > bad.yaml
+  expect_error 1 "bad.yaml:[0-9]+: boundaries.free_field needs an incident wave \(loading.earthquake with mode: incident\): the free field is the motion that wave gives the rock\.$" -- \
+    "$DDA" df bad.yaml --blocks out/blocks.h5 -o r.h5
 }
 
 case_df_ana_import() {
