@@ -59,7 +59,7 @@ Model3 prism_on_base(const df::JointProperties& joint, double lift = 0) {
   m.gravity = {0, 0, -kG};
   m.normal_penalty = m.shear_penalty = 1e9;  // the run's springs, for joints without their own
   m.contact_reach = 0.02;
-  m.control.dt = 1e-3;
+  m.control.dt = 3e-3;
   return m;
 }
 
@@ -98,8 +98,11 @@ TEST(NormalLaw3, PrismSettlesToTheOdenMartinsPenetration) {
       std::printf("3D Oden-Martins m_n = %.1f: corner penetration %.9e m (closed form %.9e)\n", m_n, g, expected);
       EXPECT_NEAR(g, expected, 1e-6 * expected);
     }
-    for (const Contact3& c : sim.contacts())
-      if (c.state != ContactState3::Open) EXPECT_NEAR(c.normal_force, kCorner, 1e-6 * kCorner);
+    for (const Contact3& c : sim.contacts()) {
+      if (c.state != ContactState3::Open) {
+        EXPECT_NEAR(c.normal_force, kCorner, 1e-6 * kCorner);
+      }
+    }
   }
 }
 
@@ -130,8 +133,11 @@ TEST(NormalLaw3, PerSetPenaltiesGiveThePenetrationAndTheShearDisplacement) {
   sim.start();
   ASSERT_TRUE(sim.start_up().frictional_equilibrium);
   ASSERT_EQ(closed_contacts(sim), 4);
-  for (const Contact3& c : sim.contacts())
-    if (c.state != ContactState3::Open) EXPECT_EQ(c.state, ContactState3::Locked);
+  for (const Contact3& c : sim.contacts()) {
+    if (c.state != ContactState3::Open) {
+      EXPECT_EQ(c.state, ContactState3::Locked);
+    }
+  }
   const double g_expected = kCorner / 2e8, u_expected = 0.2 * kWeight3 / (4 * 5e7);
   double u = 0;
   for (int v = 0; v < 4; ++v) u += 0.25 * (sim.blocks()[1].vertices[static_cast<std::size_t>(v)].x() - start[v].x());
@@ -191,43 +197,76 @@ TEST(NormalLaw3, ExtrudedPrismSettlesAsThe2dBlock) {
   EXPECT_NEAR(g3, g2, 1e-6 * expected);
 }
 
-// Worst |residual| over the run as a share of the energy moved up to then.
-double worst_residual_share(const std::vector<df::EnergyRecord>& log) {
-  double worst = 0;
-  for (std::size_t k = 1; k < log.size(); ++k) {
-    const double moved = df::energy_moved(log.front(), log[k]);
-    if (moved > 0) worst = std::max(worst, std::abs(log[k].residual) / moved);
-  }
-  return worst;
-}
-
 // The prism dropped from 5 mm onto the Oden-Martins joint (c_n = 1e9, m_n =
-// 2), 0.3 s: it lands at sqrt(2 g h) = 0.31 m/s after 0.032 s and bounces
-// on the law's stiffening springs. The ledger's stored contact energy is
-// the law's E(N) = N g / (m_n + 1) (not N^2 / 2 pn): with the penalty's
-// formula the residual would be of the order of the springs' energy
-// itself. The balance must close as the 3D sliding cube's does
-// (test_energy3d.cpp: 1e-3 of the work done), and the energy the springs
-// hold at the end is checked against E(N) by hand.
-TEST(NormalLaw3, EnergyLedgerBalancesForAPrismDroppedOnTheJoint) {
+// 2): it lands at sqrt(2 g h) = 0.31 m/s after 0.032 s and is at its
+// deepest, about 5.3 mm, near 0.05 s, which is where the run stops: the
+// springs then hold most of the energy. The ledger's stored contact energy
+// must be the law's E(N) = N g / (m_n + 1) = N^1.5 / (3 sqrt(c_n)) (the
+// penalty's N^2 / 2 pn, pn = 1e9, would be a few joules, not about 180).
+// The test integrates the work
+// the contacts take from the prism itself, from the corners' penetrations
+// g (vertex z) and the contacts' forces N after every step: DDA's step
+// moves a block under its end-of-step forces (constant acceleration), so
+// the contacts take W = sum over steps and corners of N (g_k - g_k-1).
+// The balance then says residual = W - sum E(N_end), what the implicit
+// step dissipates (k dg^2 / 2 a corner a step, k the law's tangent), to
+// what the by-hand sum leaves out: the prism's own strain energy and the
+// step's damping of it (E = 1e12 Pa: at the deepest point the corners
+// carry 4 c_n g^2 = 1.1e5 N, 5.7e4 Pa over the 2 m^2 bottom, and
+// sigma^2 V / 2E = 1.6e-3 J), so to 1e-4 of the work done. That
+// dissipation is the step's, not the law's: it goes to zero with dt,
+// halving when dt halves.
+struct Drop {
+  double residual = 0, dissipated_by_hand = 0, stored_by_hand = 0, input = 0, most_created = 0;
+  double contact = 0;
+};
+
+Drop drop(double dt) {
   const double c_n = 1e9;
   Model3 m = prism_on_base(oden_martins(c_n, 2), 0.005);
   m.control.initial_equilibrium = false;
   Simulation3 sim(m);
-  for (int s = 0; s < 300; ++s) sim.step(1e-3);
-  const std::vector<df::EnergyRecord>& log = sim.energy_log();
-  const df::EnergyRecord& e = log.back();
-  double by_hand = 0;  // c_n g^3 / 3 at each closed contact's force, g = sqrt(N / c_n)
+  std::vector<double> z(4, 0.005);
+  Drop r;
+  const int steps = static_cast<int>(std::lround(0.05 / dt));
+  for (int s = 0; s < steps; ++s) {
+    sim.step(dt);
+    for (const Contact3& c : sim.contacts()) {
+      if (c.state == ContactState3::Open) continue;
+      EXPECT_EQ(c.i, 1);  // the prism's corner on the base's face
+      EXPECT_EQ(c.kind, ContactKind3::VertexFace);
+      const auto v = static_cast<std::size_t>(c.ids[0]);
+      r.dissipated_by_hand += c.normal_force * (z[v] - sim.blocks()[1].vertices[v].z());
+    }
+    for (std::size_t v = 0; v < 4; ++v) z[v] = sim.blocks()[1].vertices[v].z();
+  }
   for (const Contact3& c : sim.contacts())
     if (c.state != ContactState3::Open && c.normal_force > 0)
-      by_hand += c.normal_force * std::sqrt(c.normal_force / c_n) / 3 + c.shear_force.squaredNorm() / (2 * 1e9);
-  std::printf("3D Oden-Martins drop: gravity work %.6f J, kinetic %.6f J, contact %.6f J (by hand %.6f J), "
-              "residual %.3e J, worst residual share %.2e\n",
-              e.gravity_work, e.kinetic, e.contact, by_hand, e.residual, worst_residual_share(log));
-  ASSERT_GT(closed_contacts(sim), 0);
-  EXPECT_NEAR(e.contact, by_hand, 1e-12 * by_hand);
-  EXPECT_GT(e.gravity_work, kWeight3 * 0.005);  // it fell 5 mm and more
-  EXPECT_LE(std::abs(e.residual), 1e-3 * e.input());
+      r.stored_by_hand += c.normal_force * std::sqrt(c.normal_force / c_n) / 3 + c.shear_force.squaredNorm() / (2 * 1e9);
+  r.dissipated_by_hand -= r.stored_by_hand;
+  const df::EnergyRecord& e = sim.energy_log().back();
+  r.residual = e.residual;
+  r.input = e.input();
+  r.contact = e.contact;
+  r.most_created = std::max(0.0, -df::most_energy_created(sim.energy_log()).residual);
+  std::printf("3D Oden-Martins drop, dt = %g s: gravity work %.6f J, kinetic %.6f J, contact %.6f J (by hand "
+              "%.6f J), residual %.6f J (by hand %.6f J), most created %.3e J\n",
+              dt, e.gravity_work, e.kinetic, e.contact, r.stored_by_hand, e.residual, r.dissipated_by_hand,
+              r.most_created);
+  return r;
+}
+
+TEST(NormalLaw3, EnergyLedgerBalancesForAPrismDroppedOnTheJoint) {
+  const Drop a = drop(1e-3), b = drop(5e-4);
+  for (const Drop& r : {a, b}) {
+    EXPECT_NEAR(r.contact, r.stored_by_hand, 1e-12 * r.input);
+    EXPECT_NEAR(r.residual, r.dissipated_by_hand, 1e-4 * r.input);
+    EXPECT_GT(r.contact, 0.5 * r.input);  // the springs hold most of the energy: E(N) is what is checked
+    EXPECT_LE(r.most_created, 1e-9 * r.input);  // the step never makes energy
+  }
+  // First order in dt: the ratio of the residuals is about 2 (measured 1.82: the landing falls at
+  // another point of a step), asked within 10 %.
+  EXPECT_NEAR(a.residual / b.residual, 2.0, 0.2);
 }
 
 // A run on the Oden-Martins joint stopped and resumed from its checkpoint
