@@ -27,6 +27,7 @@ double bond_tension3(const Contact3& c, const Model3& m);
 
 // The bond lets go in tension: the springs' energy at the break, the normal
 // spring at T A and the shear spring at `shear` (N), is released.
-void break_bond_in_tension3(Contact3& c, const Model3& m, const Eigen::Vector2d& shear);
+void break_bond_in_tension3(Contact3& c, const Model3& m, const ContactSprings3& springs,
+                            const Eigen::Vector2d& shear);
 
 }  // namespace dda::df3

@@ -106,23 +106,11 @@ void add_spring_force(BlockSystem& sys, int i, int j, double p, double s0, const
   sys.rhs(j) -= p * s0 * b;
 }
 
-// The normal spring of a closed contact over the step: N = -k (s0 + en.di +
-// gn.dj). The linear penalty is k = pn, s0 = dn0. Another normal law is
-// linearised about the penetration at the start of the step, g0 =
-// max(-dn0, 0): N = N(g0) + N'(g0) (g - g0) with g = -(dn0 + en.di + gn.dj),
-// i.e. k = N'(g0) and s0 = dn0 + g0 - N(g0) / k. It depends only on the
-// step's start, so the spring the iteration takes out of K is the one it put
-// in. Glued contacts (DC's cuts inside one piece of rock) keep pn.
-struct NormalSpring {
-  double k, s0;
-};
+// The normal spring of a closed contact over the step (the joint's normal
+// law, linearised as normal_law.hpp says). Glued contacts (DC's cuts inside
+// one piece of rock) keep pn.
 NormalSpring normal_spring(const Contact& c, const ContactLaw& law) {
-  const double dn0 = c.geo.dn0;
-  if (!law.normal || law.normal->linear() || c.glued) return {law.pn, dn0};
-  const double g0 = std::max(-dn0, 0.0);
-  const double k = law.normal->stiffness(g0);
-  // k = 0 (a law soft at first touch, at g0 = 0) carries N(g0) = 0 this step.
-  return {k, k > 0 ? dn0 + g0 - law.normal->force(g0) / k : dn0};
+  return normal_spring_over_step(c.glued ? nullptr : law.normal, law.pn, c.geo.dn0);
 }
 
 FrictionInput friction_input(const Contact& c, double dt) {

@@ -8,9 +8,7 @@
 namespace dda::df3 {
 
 void ContactCoupling3::set_springs(const std::vector<Contact3>& contacts, const std::vector<int>& dof,
-                                   double normal_penalty, double shear_penalty) {
-  normal_penalty_ = normal_penalty;
-  shear_penalty_ = shear_penalty;
+                                   const std::vector<ContactSprings3>& springs) {
   contact_.clear();
   for (std::size_t k = 0; k < contacts.size(); ++k)
     if (dof[static_cast<std::size_t>(contacts[k].i)] >= 0 && dof[static_cast<std::size_t>(contacts[k].j)] >= 0)
@@ -20,11 +18,16 @@ void ContactCoupling3::set_springs(const std::vector<Contact3>& contacts, const 
   first_j_.resize(contact_.size());
   normal_.resize(contact_.size() * kNormal);
   shear_.resize(contact_.size() * kShear);
+  kn_.resize(contact_.size());
+  ps_.resize(contact_.size());
 #pragma omp parallel for schedule(static) if (m > 20 * df::parallel_grain())
   for (int s = 0; s < m; ++s) {
     const Contact3& c = contacts[static_cast<std::size_t>(contact_[s])];
     first_i_[s] = dof[static_cast<std::size_t>(c.i)];
     first_j_[s] = dof[static_cast<std::size_t>(c.j)];
+    const ContactSprings3& joint = springs[static_cast<std::size_t>(c.joint)];
+    kn_[s] = joint.normal_spring(c.geo.dn0).k;  // fixed for the step (the law's tangent at its start)
+    ps_[s] = joint.ps;
     double* normal = normal_.data() + static_cast<std::size_t>(s) * kNormal;
     std::copy(c.geo.en.data(), c.geo.en.data() + kDofs, normal);
     std::copy(c.geo.gn.data(), c.geo.gn.data() + kDofs, normal + kDofs);
@@ -59,12 +62,14 @@ void ContactCoupling3::add_product(const Eigen::VectorXd& x, Eigen::VectorXd& y)
       // spring row a (block i) and b (block j).
       const double* normal = normal_.data() + s * kNormal;
       const Row en(normal), gn(normal + kDofs);
-      yp.template segment<kDofs>(fi).noalias() += (normal_penalty_ * gn.dot(xj)) * en;
-      yp.template segment<kDofs>(fj).noalias() += (normal_penalty_ * en.dot(xi)) * gn;
+      const double kn = kn_[static_cast<std::size_t>(s)];
+      yp.template segment<kDofs>(fi).noalias() += (kn * gn.dot(xj)) * en;
+      yp.template segment<kDofs>(fj).noalias() += (kn * en.dot(xi)) * gn;
       if (state_[static_cast<std::size_t>(s)] == kLocked) {
         const double* shear = shear_.data() + s * kShear;
         const Rows es(shear), gs(shear + 2 * kDofs);
-        const Eigen::Vector2d sj = shear_penalty_ * (gs * xj), si = shear_penalty_ * (es * xi);
+        const double ps = ps_[static_cast<std::size_t>(s)];
+        const Eigen::Vector2d sj = ps * (gs * xj), si = ps * (es * xi);
         yp.template segment<kDofs>(fi).noalias() += es.transpose() * sj;
         yp.template segment<kDofs>(fj).noalias() += gs.transpose() * si;
       }

@@ -44,6 +44,13 @@ double OdenMartinsNormal::energy_at_force(double n) const {
   return n * penetration_at_force(n) / (m_n_ + 1);
 }
 
+NormalSpring normal_spring_over_step(const NormalLaw* law, double pn, double dn0) {
+  if (!law || law->linear()) return {pn, dn0};
+  const double g0 = std::max(-dn0, 0.0);
+  const double k = law->stiffness(g0);
+  return {k, k > 0 ? dn0 + g0 - law->force(g0) / k : dn0};
+}
+
 const std::vector<NormalLawEntry>& normal_laws() {
   // One line per law.
   static const std::vector<NormalLawEntry> laws{

@@ -50,24 +50,6 @@ struct Parsed3 {
   std::optional<df::WaterTable<3>> water;
 };
 
-// The 2D joint keys the 3D contacts cannot honour: their springs are the
-// run's (control).
-void check_joint3(const YamlNode& n) {
-  for (const char* key : {"normal_penalty", "shear_penalty"})
-    if (n.has(key))
-      n.fail_key(key, std::string("is per joint set in 2D only; in 3D give control.") + key + " (every contact)");
-  if (n.has("normal_law") && !(n.child("normal_law").is_scalar() && n.child("normal_law").as_text() == "penalty"))
-    n.fail_key("normal_law", "is 2D only: the 3D contacts have the linear penalty spring (control.normal_penalty)");
-}
-
-df::JointsSection read_joints3(const YamlNode& root) {
-  df::JointsSection j = df::read_joints_section(root);
-  if (const auto s = root.optional_child("joints"))
-    if (const auto d = s->optional_child("default")) check_joint3(*d);
-  for (const auto& named : j.sets) check_joint3(named.node);
-  return j;
-}
-
 GroundInput3 read_earthquake3(const YamlNode& n) {
   if (n.is_map() && n.has("foundation"))
     n.fail_key("foundation", "is a 2D key: in 3D the foundation is the fixed blocks (see fixed)");
@@ -146,7 +128,7 @@ void read_control3(const YamlNode& root, Parsed3& p) {
 Parsed3 parse(const YamlNode& root) {
   Parsed3 p;
   p.materials = read_materials3(root);
-  p.joints = read_joints3(root);
+  p.joints = df::read_joints_section(root);  // the 2D keys, all of them (normal laws and penalties per set too)
   read_loading3(root, p);
   p.fixed = read_fixed3(root);
   read_control3(root, p);

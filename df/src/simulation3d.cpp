@@ -102,6 +102,7 @@ Simulation3::Simulation3(Model3 model)
   if (model_.earthquake.motion && !model_.earthquake.mode)
     throw InputError("The 3D earthquake has no mode: give loading, displacement or incident.");
   make_friction_laws();
+  springs_ = contact_springs3(model_);
   index_points();
   start_bolts();
   check_viscous();
@@ -219,7 +220,7 @@ void Simulation3::assemble(double dt) {
   for_each_range(block_loads_, [this](Assembly3& range, const std::vector<int>& mine) {
     for (const int k : mine) {
       const Contact3& c = contacts_[static_cast<std::size_t>(k)];
-      add_contact_springs(c, c.state, 1.0, model_, range);
+      add_contact_springs(c, c.state, 1.0, springs_of(c), range);
     }
   });
 }
@@ -229,8 +230,8 @@ void Simulation3::swap_springs(const std::vector<std::pair<int, ContactState3>>&
     for (const auto& [k, before] : changed) {
       const Contact3& c = contacts_[static_cast<std::size_t>(k)];
       if (!range.owns(c.i) && !range.owns(c.j)) continue;
-      add_contact_springs(c, before, -1.0, model_, range);
-      add_contact_springs(c, c.state, 1.0, model_, range);
+      add_contact_springs(c, before, -1.0, springs_of(c), range);
+      add_contact_springs(c, c.state, 1.0, springs_of(c), range);
     }
   });
 }
@@ -250,7 +251,10 @@ std::vector<Vector12d> Simulation3::solve(double dt, const std::vector<std::pair
     // anchors and friction change from one iterate to the next).
     x = block_loads_;
     for_each_range(x, [this](Assembly3& range, const std::vector<int>& mine) {
-      for (const int k : mine) add_contact_loads(contacts_[static_cast<std::size_t>(k)], model_, known_, range);
+      for (const int k : mine) {
+        const Contact3& c = contacts_[static_cast<std::size_t>(k)];
+        add_contact_loads(c, springs_of(c), known_, range);
+      }
     });
   }
   {
@@ -300,7 +304,7 @@ void Simulation3::detect() {
 bool Simulation3::iterate(double dt, std::vector<Vector12d>& d, int& iterations) {
   prepare_input(dt);
   index_ranges();
-  coupling_->set_springs(contacts_, dof_, model_.normal_penalty, model_.shear_penalty);
+  coupling_->set_springs(contacts_, dof_, springs_);
   std::vector<int> changes(contacts_.size(), 0);  // state changes of each contact in this step
   const df::TrialScope trial_scope(*solver_);
   // The contacts whose state the last update changed, with the state they
@@ -350,7 +354,8 @@ bool Simulation3::iterate(double dt, std::vector<Vector12d>& d, int& iterations)
         const double friction_used = c.strength;
         bool friction_settled = true;
         const ContactState3 s =
-            update_contact3(c, sim.model_, sim.law_of(c), dt, d[c.i], d[c.j], changes[k] >= 2, friction_settled);
+            update_contact3(c, sim.model_, sim.springs_of(c), sim.law_of(c), dt, d[c.i], d[c.j], changes[k] >= 2,
+                            friction_settled);
         settled = settled && friction_settled && s == c.state;
         unsettled[static_cast<std::size_t>(k)] = !friction_settled || s != c.state;
         if (s == ContactState3::Sliding && c.state == ContactState3::Sliding)
@@ -495,7 +500,7 @@ void Simulation3::finish_step(const std::vector<Vector12d>& d, double dt) {
     // few nanometres, the elastic spreading of a block resting at its limit
     // or round-off, barely turns it.
     if (c.state == ContactState3::Sliding) {
-      const Eigen::Vector2d stretched = c.slip_dir * (c.strength / model_.shear_penalty) + c.slip;
+      const Eigen::Vector2d stretched = c.slip_dir * (c.strength / springs_of(c).ps) + c.slip;
       if (stretched.squaredNorm() > 0) c.slip_dir = stretched.normalized();
     }
     // The law's memory over the accepted step (as the 2D solver); the

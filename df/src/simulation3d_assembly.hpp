@@ -126,7 +126,10 @@ struct Assembly3 {
 //   friction of a sliding contact. `known`: the increments of fixed blocks
 //   (a moving foundation), folded into the stretch; free blocks' entries
 //   are not read.
-void add_contact_springs(const Contact3& c, ContactState3 state, double sign, const Model3& m, Assembly3& sys);
-void add_contact_loads(const Contact3& c, const Model3& m, const std::vector<Vector12d>& known, Assembly3& sys);
+// `springs`: the contact's joint's (ContactSprings3).
+void add_contact_springs(const Contact3& c, ContactState3 state, double sign, const ContactSprings3& springs,
+                         Assembly3& sys);
+void add_contact_loads(const Contact3& c, const ContactSprings3& springs, const std::vector<Vector12d>& known,
+                       Assembly3& sys);
 
 }  // namespace dda::df3

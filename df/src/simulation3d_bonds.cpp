@@ -57,9 +57,10 @@ double bond_tension3(const Contact3& c, const Model3& m) {
   return c.bonded ? m.joint(c.joint).tensile_strength * c.bond_area : 0.0;
 }
 
-void break_bond_in_tension3(Contact3& c, const Model3& m, const Eigen::Vector2d& shear) {
+void break_bond_in_tension3(Contact3& c, const Model3& m, const ContactSprings3& springs,
+                            const Eigen::Vector2d& shear) {
   const double pull = bond_tension3(c, m);
-  c.bond_released = pull * pull / (2 * m.normal_penalty) + shear.squaredNorm() / (2 * m.shear_penalty);
+  c.bond_released = springs.normal_energy(-pull) + shear.squaredNorm() / (2 * springs.ps);
   c.bonded = false;
 }
 
@@ -82,7 +83,8 @@ void Simulation3::place_bonds() {
     // that would fall away from its joint; the shear spring starts unloaded.
     if (c.state == ContactState3::Open) {
       c.state = ContactState3::Locked;
-      c.normal_force = -model_.normal_penalty * c.geo.dn0;
+      const df::NormalSpring normal = springs_of(c).normal_spring(c.geo.dn0);
+      c.normal_force = -normal.k * normal.s0;  // -pn dn0 for the linear penalty
     }
   }
 }

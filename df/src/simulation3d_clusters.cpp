@@ -81,8 +81,10 @@ bool Simulation3::settle_clusters(double dt, std::vector<Vector12d>& d, std::vec
       // F on the cluster: the blocks' loads and those of every contact of
       // its blocks in its current state (as solve() assembles them).
       Assembly3 loads{sim.dof_, sim.k_lower_, f};
-      for (const int k : its_contacts)
-        add_contact_loads(sim.contacts_[static_cast<std::size_t>(k)], sim.model_, sim.known_, loads);
+      for (const int k : its_contacts) {
+        const Contact3& c = sim.contacts_[static_cast<std::size_t>(k)];
+        add_contact_loads(c, sim.springs_of(c), sim.known_, loads);
+      }
       for (const int fb : cluster)
         r.segment<kDofs>(kDofs * fb) = sim.block_loads_.segment<kDofs>(kDofs * fb) +
                                        f.segment<kDofs>(kDofs * fb) - rows.multiply_row(fb, x_all);
@@ -111,7 +113,7 @@ bool Simulation3::settle_clusters(double dt, std::vector<Vector12d>& d, std::vec
         Contact3& c = sim.contacts_[static_cast<std::size_t>(k)];
         bool friction_settled = true;
         const ContactState3 before = c.state;
-        const ContactState3 s = update_contact3(c, sim.model_, sim.law_of(c), dt, d[c.i], d[c.j],
+        const ContactState3 s = update_contact3(c, sim.model_, sim.springs_of(c), sim.law_of(c), dt, d[c.i], d[c.j],
                                                 changes[static_cast<std::size_t>(k)] >= 2, friction_settled);
         if (s != before) {
           ++changes[static_cast<std::size_t>(k)];

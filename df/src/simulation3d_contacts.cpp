@@ -8,7 +8,10 @@
 #include <tuple>
 #include <unordered_map>
 #include <numbers>
+#include <string>
+#include <utility>
 
+#include "dda/common/error.hpp"
 #include "dda/df/broad_phase3d.hpp"
 #include "dda/df/block_system.hpp"
 #include "dda/df/simulation3d.hpp"
@@ -271,30 +274,33 @@ void detect_contacts3(const std::vector<Polyhedron>& blocks, const std::vector<C
   for (int a = 0; a < n; ++a) std::copy(found[a].begin(), found[a].end(), out.begin() + first[a]);
 }
 
-void add_contact_springs(const Contact3& c, ContactState3 state, double sign, const Model3& m, Assembly3& sys) {
+void add_contact_springs(const Contact3& c, ContactState3 state, double sign, const ContactSprings3& springs,
+                         Assembly3& sys) {
   if (state == ContactState3::Open) return;
   const ContactGeometry3& g = c.geo;
-  // Normal spring: K += p [en; gn][en; gn]^T.
-  sys.add_spring_k<1>(c.i, c.j, sign * m.normal_penalty, g.en.transpose(), g.gn.transpose());
-  if (state == ContactState3::Locked) sys.add_spring_k<2>(c.i, c.j, sign * m.shear_penalty, g.es, g.gs);
+  // Normal spring: K += k [en; gn][en; gn]^T, k the law's tangent over the
+  // step (pn for the linear penalty).
+  sys.add_spring_k<1>(c.i, c.j, sign * springs.normal_spring(g.dn0).k, g.en.transpose(), g.gn.transpose());
+  if (state == ContactState3::Locked) sys.add_spring_k<2>(c.i, c.j, sign * springs.ps, g.es, g.gs);
 }
 
-void add_contact_loads(const Contact3& c, const Model3& m, const std::vector<Vector12d>& known, Assembly3& sys) {
+void add_contact_loads(const Contact3& c, const ContactSprings3& springs, const std::vector<Vector12d>& known,
+                       Assembly3& sys) {
   if (c.state == ContactState3::Open) return;
   const ContactGeometry3& g = c.geo;
   // A fixed block's known increment is part of the spring's initial stretch.
   const bool fi = sys.dof[c.i] < 0, fj = sys.dof[c.j] < 0;
-  double dn0 = g.dn0;
-  if (fi) dn0 += g.en.dot(known[c.i]);
-  if (fj) dn0 += g.gn.dot(known[c.j]);
-  // Normal spring: F -= p dn0 [en; gn].
-  sys.add_spring_f<1>(c.i, c.j, m.normal_penalty, Eigen::Matrix<double, 1, 1>(dn0), g.en.transpose(),
-                      g.gn.transpose());
+  const df::NormalSpring normal = springs.normal_spring(g.dn0);
+  double s0n = normal.s0;  // dn0 for the linear penalty
+  if (fi) s0n += g.en.dot(known[c.i]);
+  if (fj) s0n += g.gn.dot(known[c.j]);
+  // Normal spring: F -= k s0 [en; gn].
+  sys.add_spring_f<1>(c.i, c.j, normal.k, Eigen::Matrix<double, 1, 1>(s0n), g.en.transpose(), g.gn.transpose());
   if (c.state == ContactState3::Locked) {
     Eigen::Vector2d s0 = shear_offset(c);
     if (fi) s0 += g.es * known[c.i];
     if (fj) s0 += g.gs * known[c.j];
-    sys.add_spring_f<2>(c.i, c.j, m.shear_penalty, s0, g.es, g.gs);
+    sys.add_spring_f<2>(c.i, c.j, springs.ps, s0, g.es, g.gs);
     return;
   }
   // Sliding: the strength of the last iterate against the slip, on P of
@@ -302,6 +308,28 @@ void add_contact_loads(const Contact3& c, const Model3& m, const std::vector<Vec
   // gs = -[t1 t2]^T T_j(Q)).
   sys.add_f(c.i, -c.strength * g.es.transpose() * c.slip_dir);
   sys.add_f(c.j, -c.strength * g.gs.transpose() * c.slip_dir);
+}
+
+std::vector<ContactSprings3> contact_springs3(const Model3& m) {
+  std::vector<ContactSprings3> out;
+  auto add = [&](const df::JointProperties& joint, const std::string& which) {
+    for (const auto& [key, value] : {std::pair{"normal_penalty", joint.normal_penalty},
+                                     std::pair{"shear_penalty", joint.shear_penalty}})
+      if (value && !(std::isfinite(*value) && *value > 0))
+        throw InputError("The 3D " + which + "'s " + key + " must be a positive number (N/m).");
+    ContactSprings3 s;
+    s.pn = joint.normal_penalty.value_or(m.normal_penalty);
+    // The run's ratio for a joint with a normal penalty of its own (2D's
+    // shear_ratio); the run's ps, to the bit, for one without.
+    s.ps = joint.shear_penalty ? *joint.shear_penalty
+           : joint.normal_penalty ? m.shear_penalty / m.normal_penalty * s.pn
+                                  : m.shear_penalty;
+    s.normal = df::make_normal_law(joint, s.pn);  // InputError for an unknown law or a bad number
+    out.push_back(std::move(s));
+  };
+  for (std::size_t k = 0; k < m.joint_sets.size(); ++k) add(m.joint_sets[k], "joint set " + std::to_string(k));
+  add(m.default_joint, "default joint");
+  return out;
 }
 
 Eigen::Vector2d shear_offset(const Contact3& c) { return tangents(c.geo).transpose() * (c.geo.point_i - c.ref_j); }
@@ -321,11 +349,16 @@ int slip_sign3(const Contact3& c) {
   return (tangents(c.geo) * c.slip_dir).dot(c.slip_axis) >= 0 ? 1 : -1;
 }
 
-ContactState3 update_contact3(Contact3& c, const Model3& m, const df::FrictionLaw& law, double dt,
-                              const Vector12d& di, const Vector12d& dj, bool hold, bool& settled) {
+ContactState3 update_contact3(Contact3& c, const Model3& m, const ContactSprings3& springs,
+                              const df::FrictionLaw& law, double dt, const Vector12d& di, const Vector12d& dj,
+                              bool hold, bool& settled) {
   const ContactGeometry3& g = c.geo;
-  const double eps = m.tolerance, pn = m.normal_penalty, ps = m.shear_penalty;
-  const double dn = g.dn0 + g.en.dot(di) + g.gn.dot(dj);
+  const double eps = m.tolerance, pn = springs.pn, ps = springs.ps;
+  const double dn = g.dn0 + g.en.dot(di) + g.gn.dot(dj);  // the gap (penetration negative): decides closing
+  // The normal spring's force, as assembled; for the linear penalty
+  // (s0 = dn0) the very numbers of -pn dn.
+  const df::NormalSpring normal = springs.normal_spring(g.dn0);
+  const double n = -normal.k * (normal.s0 + g.en.dot(di) + g.gn.dot(dj));
   const ContactState3 old = c.state;
   const double friction_used = old == ContactState3::Sliding ? c.strength : 0.0;  // what was assembled
 
@@ -343,18 +376,17 @@ ContactState3 update_contact3(Contact3& c, const Model3& m, const df::FrictionLa
 
   if (old == ContactState3::Open) {
     if (dn < -eps) {
-      c.normal_force = -pn * dn;
+      c.normal_force = n;
       return lock();
     }
     c.normal_force = 0;
     return ContactState3::Open;
   }
 
-  const double n = -pn * dn;
   // Tension beyond the band (and the bond's strength): the contact opens.
   if (n < -(bond_tension3(c, m) + pn * eps) && !hold) {
     // A bonded contact is locked (sliding broke the bond): its shear spring goes too.
-    if (c.bonded) break_bond_in_tension3(c, m, -ps * (shear_offset(c) + g.es * di + g.gs * dj));
+    if (c.bonded) break_bond_in_tension3(c, m, springs, -ps * (shear_offset(c) + g.es * di + g.gs * dj));
     c.normal_force = 0;
     return ContactState3::Open;
   }

@@ -2,8 +2,9 @@
 // 2D one (simulation_physics.cpp):
 //
 // stored   kinetic 1/2 v^T M v of the free blocks (the twelve rates); elastic
-//          V/2 sigma^T D^-1 sigma; contact N^2/2pn + |S|^2/2ps of every
-//          closed contact (a sliding one keeps its shear spring stretched by
+//          V/2 sigma^T D^-1 sigma; contact E_n(N) + |S|^2/2ps of every
+//          closed contact, E_n the normal law's energy at N (N^2/2pn for
+//          the linear penalty) (a sliding one keeps its shear spring stretched by
 //          the friction force); fixed p/2 |gap|^2 of the fixed-point springs;
 //          bolts T^2/2k of every intact bolt.
 // input    gravity rho V g . u_c; loads: the rest of the body acceleration
@@ -36,9 +37,9 @@ namespace dda::df3 {
 namespace {
 
 // Energy held by a closed contact's springs.
-double contact_spring_energy(const Contact3& c, double pn, double ps) {
+double contact_spring_energy(const Contact3& c, const ContactSprings3& springs) {
   if (c.state == ContactState3::Open) return 0;
-  return c.normal_force * c.normal_force / (2 * pn) + c.shear_force.squaredNorm() / (2 * ps);
+  return springs.normal_energy(c.normal_force) + c.shear_force.squaredNorm() / (2 * springs.ps);
 }
 
 // Sum of term(b) over the blocks: the terms in parallel, the sum serially
@@ -82,7 +83,7 @@ void Simulation3::store_energy(df::EnergyRecord& e) const {
   e.contact = e.fixed = e.bolts = 0;
   // In contact order, a zero term leaving the sum as it was: the same on
   // any number of threads.
-  for (const Contact3& c : contacts_) e.contact += contact_spring_energy(c, model_.normal_penalty, model_.shear_penalty);
+  for (const Contact3& c : contacts_) e.contact += contact_spring_energy(c, springs_of(c));
   e.bolts = stored_bolt_energy();
   for (std::size_t k = 0; k < model_.fixed_points.size(); ++k) {
     const FixedPoint3& f = model_.fixed_points[k];

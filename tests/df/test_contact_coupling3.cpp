@@ -1,7 +1,10 @@
 // The 3D solver's PCG product through the contact springs
 // (df/src/contact_coupling3.hpp) against the K the assembly builds from the
 // same contacts (Assembly3, add_contact_springs): the coupling blocks of K
-// times x, in every contact state, with fixed blocks, on one and two threads.
+// times x, in every contact state, with fixed blocks, on one and two threads,
+// with two joints of their own springs: a set with its own penalties and a
+// default joint of the Oden-Martins law, whose tangent k differs from one
+// contact to the next (it depends on the penetration at the step's start).
 #include <gtest/gtest.h>
 
 #include <Eigen/Core>
@@ -22,6 +25,7 @@ struct Springs {
   int n_dofs = 0;
   std::vector<Contact3> contacts;
   Model3 model;
+  std::vector<ContactSprings3> springs;  // per joint index
 };
 
 // Seven blocks, two of them fixed, and 60 contacts between random pairs with
@@ -32,8 +36,16 @@ Springs random_springs() {
   s.n_dofs = 60;
   s.model.normal_penalty = 3.5;
   s.model.shear_penalty = 1.25;
+  df::JointProperties own;
+  own.normal_penalty = 7.0;
+  own.shear_penalty = 0.5;
+  s.model.joint_sets = {own};
+  s.model.default_joint.normal_law = "oden_martins";
+  s.model.default_joint.normal_parameters = {{"c_n", 2e3}, {"m_n", 2.5}};
+  s.springs = contact_springs3(s.model);
   std::mt19937 rng(11);
-  std::uniform_int_distribution<int> block(0, 6), state(0, 2);
+  std::uniform_int_distribution<int> block(0, 6), state(0, 2), joint(0, 1);
+  std::uniform_real_distribution<double> gap(-1e-2, 0);
   for (int k = 0; k < 60; ++k) {
     Contact3 c;
     c.i = block(rng);
@@ -41,6 +53,8 @@ Springs random_springs() {
     while (c.j == c.i);
     const int st = state(rng);
     c.state = st == 0 ? ContactState3::Open : st == 1 ? ContactState3::Sliding : ContactState3::Locked;
+    c.joint = joint(rng);
+    c.geo.dn0 = gap(rng);
     c.geo.en.setRandom();
     c.geo.gn.setRandom();
     c.geo.es.setRandom();
@@ -57,7 +71,7 @@ Eigen::VectorXd assembled_coupling_product(const Springs& s, const Eigen::Vector
   Eigen::SparseMatrix<double> lower = block_lower_pattern(s.dof, s.n_dofs, pairs);
   Eigen::VectorXd f = Eigen::VectorXd::Zero(s.n_dofs);
   Assembly3 sys{s.dof, lower, f};
-  for (const Contact3& c : s.contacts) add_contact_springs(c, c.state, 1.0, s.model, sys);
+  for (const Contact3& c : s.contacts) add_contact_springs(c, c.state, 1.0, s.springs[static_cast<std::size_t>(c.joint)], sys);
   Eigen::MatrixXd k = Eigen::MatrixXd(lower);
   k += k.transpose().eval();
   k.diagonal() /= 2;
@@ -74,7 +88,7 @@ TEST(ContactCoupling3, IsTheProductWithTheAssembledCouplingBlocks) {
   const Eigen::VectorXd expected = assembled_coupling_product(s, x);
   ASSERT_GT(expected.norm(), 1.0);
   ContactCoupling3 coupling;
-  coupling.set_springs(s.contacts, s.dof, s.model.normal_penalty, s.model.shear_penalty);
+  coupling.set_springs(s.contacts, s.dof, s.springs);
   Eigen::VectorXd y = Eigen::VectorXd::Constant(s.n_dofs, 0.5);  // it adds to y
   coupling.add_product(x, y);
   // The same terms summed in another order: round-off apart.
@@ -97,7 +111,7 @@ TEST(ContactCoupling3, IsTheProductWithTheAssembledCouplingBlocks) {
 TEST(ContactCoupling3, SameOnOneAndTwoThreads) {
   const Springs s = random_springs();
   ContactCoupling3 coupling;
-  coupling.set_springs(s.contacts, s.dof, s.model.normal_penalty, s.model.shear_penalty);
+  coupling.set_springs(s.contacts, s.dof, s.springs);
   const Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(s.n_dofs, 1, -4).array().cos();
   Eigen::VectorXd one = Eigen::VectorXd::Zero(s.n_dofs), two = one;
   {

@@ -11,9 +11,7 @@
 #include "dda/common/error.hpp"
 #include "dda/df/normal_law.hpp"
 #include "dda/df/scenario.hpp"
-#include "dda/df/scenario3d.hpp"
 #include "dda/df/simulation.hpp"
-#include "df3_io_test_models.hpp"
 #include "df_test_models.hpp"
 
 namespace dda::df {
@@ -174,23 +172,7 @@ TEST(NormalCompliance, ScenarioKey) {
             "s.yaml:4: joints.fault.normal_law must be a known normal law (penalty, oden_martins), got 'hertz'.");
 }
 
-TEST(NormalCompliance, RefusedIn3D) {
-  // The 3D contacts have the linear penalty only: a 3D scenario that asks
-  // for another normal law is refused, not run with the penalty.
-  const std::string text =
-      "dimension: 3\njoints:\n  default: {friction_deg: 35, normal_law: {name: oden_martins, c_n: 1.0e12, m_n: 2}}\n"
-      "control: {dt: 0.002, total_time: 0.5}\n";
-  const std::vector<ModelPoint3> points{{"top", PointKind::Measurement, Vec3(0, 0, 0.9)}};
-  std::string error = "(no error)";
-  try {
-    df3::read_df3_scenario(YamlNode::load_string(text, "s.yaml"), df3::testing::incline_blocks(points), "b3.h5");
-  } catch (const InputError& e) {
-    error = e.what();
-  }
-  EXPECT_EQ(error,
-            "s.yaml:3: joints.default.normal_law is 2D only: the 3D contacts have the linear penalty spring "
-            "(control.normal_penalty).");
-}
+// 3D takes the normal laws too: test_normal_law3d.cpp.
 
 }  // namespace
 }  // namespace dda::df

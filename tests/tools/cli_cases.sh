@@ -865,6 +865,46 @@ assert abs(s - 0.9064) < 0.02 * 0.9064, s" || fail "the slider did not slide as 
   [ ! -e r.h5 ] || fail "a results file was written despite the errors"
 }
 
+# Normal laws and per-set penalties in 3D: the 3 x 3 x 3 m slider of
+# df3_incline.yaml on a level base (the plane at dip 0), W = 2600 * 9.81 *
+# 27 = 688,662 N on its four bottom corners, W / 4 = 172,165.5 N each. On
+# an Oden-Martins joint (c_n = 1e11, m_n = 2) the relaxed slider has sunk
+# g = sqrt(172165.5 / 1e11) = 1.31212e-3 m; on a set's own penalty (1e9
+# N/m) W / (4 pn) = 1.72166e-4 m (the run's default, E times the cube root
+# of the volume, is 3e12 N/m: 5.7e-8 m).
+# E = 1e12 Pa keeps the slider's own shortening between its base and its
+# centre (about 6e-8 m) below 1e-3 of either. A bad m_n names file, line
+# and key, and nothing is written.
+case_df3_normal_law() {
+  sed -e 's/dip: 20, dip_direction: 90/dip: 0, dip_direction: 90/' \
+      -e 's/-0.3420201433256687, 0, -0.9396926207859084/0, 0, -1/g' \
+      -e 's/young: 1.0e10/young: 1.0e12/' \
+      -e 's/  slide: {friction_deg: 10}/  slide: {friction_deg: 30, normal_law: {name: oden_martins, c_n: 1.0e11, m_n: 2}}/' \
+      -e 's/total_time: 1, output_interval: 0.25/total_time: 0.05, output_interval: 0.05/' \
+      -e 's/initial_equilibrium: false/initial_equilibrium: true/' -e 's/vtk: true/vtk: false/' \
+      "$SRC/tests/data/df3_incline.yaml" > om.yaml || fail "write the scenario"
+  grep -q "oden_martins" om.yaml && grep -q "dip: 0," om.yaml && grep -q "initial_equilibrium: true" om.yaml \
+    || fail "sed did not make the level Oden-Martins scenario"
+  sed 's/normal_law: {name: oden_martins, c_n: 1.0e11, m_n: 2}/normal_penalty: 1.0e9/' om.yaml > pn.yaml
+  "$DDA" run om.yaml -o out -q || fail "run on the Oden-Martins joint"
+  "$DDA" df pn.yaml --blocks out/blocks3d.h5 -o pn.h5 -q || fail "run on the set's penalty"
+  "$DDA" history out/results.h5 --csv --point slider > om.csv || fail "history"
+  "$DDA" history pn.h5 --csv --point slider > pn.csv || fail "history of the penalty run"
+  /usr/bin/python3 - <<'PY' || fail "the slider did not sink as the joint's normal law says"
+import csv, math
+for name, expected in (("om.csv", math.sqrt(172165.5 / 1e11)), ("pn.csv", 172165.5 / 1e9)):
+    rows = list(csv.DictReader(open(name)))
+    for r in (rows[0], rows[-1]):  # relaxed, and at rest 0.05 s later
+        sink = -float(r["slider.uz"])
+        print("%s t = %s: sink %.6e m, expected %.6e m" % (name, r["t"], sink, expected))
+        assert abs(sink - expected) < 1e-3 * expected, (name, r["t"], sink)
+PY
+  sed 's/m_n: 2}/m_n: 0.5}/' om.yaml > bad.yaml
+  expect_error 1 "bad.yaml:[0-9]+: joints.slide.normal_law.m_n must be in \[1, 10\], got 0.5\.$" -- \
+    "$DDA" df bad.yaml --blocks out/blocks3d.h5 -o r.h5
+  [ ! -e r.h5 ] || fail "a results file was written despite the error"
+}
+
 # An incident wave through a viscous base (boundaries.viscous, earthquake mode
 # incident): a column of ten bonded 10 x 5 m beds shaken vertically (a P
 # wave; a free-standing column rocks under horizontal shaking) by a Hann

@@ -146,9 +146,19 @@ std::string contact_settings(const Sim& sim) {
            num(m.control.dt) + " s; up to " + std::to_string(m.control.max_open_close) + " open-close iterations a step" +
            (m.control.contact_clusters ? ", contact clusters on" : ", contact clusters off");
   } else {
-    line = "contact springs pn " + num(m.normal_penalty) + " N/m, ps " + num(m.shear_penalty) +
-           " N/m (per contact point); dt " + num(m.control.dt) + " s; up to " + std::to_string(m.max_iterations) +
-           " open-close iterations a step";
+    // Per joint (a joint set may give its own springs and normal law).
+    double pn_lo = 1e300, pn_hi = 0, ps_lo = 1e300, ps_hi = 0;
+    std::string laws;
+    for (const auto& j : contact_springs3(m)) {  // dda::df3, found by the model's namespace
+      pn_lo = std::min(pn_lo, j.pn), pn_hi = std::max(pn_hi, j.pn);
+      ps_lo = std::min(ps_lo, j.ps), ps_hi = std::max(ps_hi, j.ps);
+      if (!j.normal->linear() && laws.find(j.normal->name()) == std::string::npos)
+        laws += (laws.empty() ? "" : ", ") + j.normal->name();
+    }
+    auto range = [](double lo, double hi) { return lo == hi ? num(lo) : num(lo) + " to " + num(hi); };
+    line = "contact springs pn " + range(pn_lo, pn_hi) + " N/m, ps " + range(ps_lo, ps_hi) + " N/m (per contact point" +
+           (laws.empty() ? "" : "; normal law " + laws + " where a joint gives it") + "); dt " + num(m.control.dt) +
+           " s; up to " + std::to_string(m.max_iterations) + " open-close iterations a step";
   }
   return line;
 }

@@ -1,12 +1,12 @@
 #pragma once
 // Normal laws of a closed contact: its normal force against its
-// penetration g (m, >= 0), per contact point and unit thickness, as the
-// penalty spring of classic DDA is. A law is one small type behind
+// penetration g (m, >= 0), per contact point, as the penalty spring of
+// classic DDA is (in 2D per unit thickness too; in 3D the force itself). A law is one small type behind
 // NormalLaw and one line in normal_laws() (df/src/normal_laws.cpp).
 //
 // The solver linearises the law once per step about the penetration at the
-// start of the step, g0 (ContactGeometry::dn0): N = N(g0) + N'(g0) (g - g0)
-// (normal_spring in contact.cpp). The force at the end of a step is then
+// start of the step, g0 (ContactGeometry::dn0, ContactGeometry3::dn0):
+// N = N(g0) + N'(g0) (g - g0) (normal_spring_over_step below). The force at the end of a step is then
 // off the curve by at most N''/2 times the square of the step's change of
 // penetration, and the next step starts again from the curve at its own
 // g0, so the error does not build up. Physics: docs/friction.md.
@@ -65,6 +65,20 @@ class OdenMartinsNormal final : public NormalLaw {
  private:
   double c_n_, m_n_;
 };
+
+// The spring a closed contact's normal law gives over one step, the same in
+// 2D and 3D: N = -k (s0 + the step's change of the gap). The linear
+// penalty (or no law) is k = pn, s0 = dn0, the numbers of classic DDA to
+// the last bit. Another law is linearised about the penetration at the
+// start of the step, g0 = max(-dn0, 0): N = N(g0) + N'(g0) (g - g0) with
+// g = -(dn0 + change), i.e. k = N'(g0) and s0 = dn0 + g0 - N(g0) / k. It
+// depends only on the step's start, so the spring an open-close iterate
+// takes out of K is the one it put in. k = 0 (a law soft at first touch,
+// at g0 = 0) carries N(g0) = 0 this step.
+struct NormalSpring {
+  double k, s0;
+};
+NormalSpring normal_spring_over_step(const NormalLaw* law, double pn, double dn0);
 
 // A number a normal law reads: key, unit and what it must be.
 struct NormalLawParameter {

@@ -32,6 +32,7 @@
 #include "dda/df/damping.hpp"
 #include "dda/df/energy.hpp"
 #include "dda/df/friction.hpp"
+#include "dda/df/normal_law.hpp"
 #include "dda/df/water.hpp"
 #include "dda/df/ground_motion3.hpp"
 #include "dda/df/points3d.hpp"
@@ -95,13 +96,15 @@ struct Model3 {
   std::vector<Vector12d> initial_velocity;
   // Joint properties by the joint set of the faces in contact (PolyFace::set;
   // index = set id); faces of other sets (boundary, excavation, none given)
-  // use default_joint. Read: the friction (law, angle, parameters) and the
-  // bond (cohesion, tensile_strength; Pa, over the contact's bond_area);
-  // the penalties are below.
+  // use default_joint. Read: the friction (law, angle, parameters), the
+  // bond (cohesion, tensile_strength; Pa, over the contact's bond_area),
+  // the normal law and the joint's own penalties (ContactSprings3).
   std::vector<df::JointProperties> joint_sets;
   df::JointProperties default_joint;
-  double normal_penalty = 1e9;     // N/m, per contact point
-  double shear_penalty = 1e9;      // N/m, per contact point
+  // The run's springs, N/m per contact point: those of every joint that
+  // gives no normal_penalty / shear_penalty of its own (ContactSprings3).
+  double normal_penalty = 1e9;
+  double shear_penalty = 1e9;
   Vec3 gravity{0, 0, -9.81};       // m/s^2
   // Hydrostatic joint water (df/water.hpp, docs/formulation.md); none: dry
   // joints, and no cost. Saturation per set: JointProperties::saturation.
@@ -136,6 +139,25 @@ struct Model3 {
 };
 
 enum class ContactState3 { Open, Sliding, Locked };
+
+// The springs of the contacts of one joint (a joint set, or the default),
+// as 2D resolves them per joint: the joint's normal_penalty, else the
+// run's; its shear_penalty, else the run's ratio ps / pn times its normal
+// penalty (the run's ps itself for a joint without a normal penalty of its
+// own); and its normal law (normal_law.hpp: N against the penetration,
+// per contact point), made once and shared by copies.
+struct ContactSprings3 {
+  double pn = 0, ps = 0;
+  std::shared_ptr<const df::NormalLaw> normal;
+  // The normal spring over a step that starts at gap dn0 (m, penetration
+  // negative): N = -k (s0 + the step's change of the gap).
+  df::NormalSpring normal_spring(double dn0) const { return df::normal_spring_over_step(normal.get(), pn, dn0); }
+  // J held by the normal spring at force n (the law's integral of N dg).
+  double normal_energy(double n) const { return normal->energy_at_force(n); }
+};
+// One per joint index (Model3::joint: the sets, then the default).
+// InputError for a penalty that is not a positive number, or a bad law.
+std::vector<ContactSprings3> contact_springs3(const Model3& m);
 
 // One tracked contact: block i's vertex / edge against block j's face / edge.
 struct Contact3 {
@@ -206,9 +228,10 @@ void detect_contacts3(const std::vector<Polyhedron>& blocks, const std::vector<C
 // friction force moved more than 0.1 % since the previous iterate. `hold` (the 2D rule): a contact that already changed state twice
 // in this step may no longer open or re-lock, so cycles between near-limit
 // states end (it can still go locked -> sliding).
-ContactState3 update_contact3(Contact3& c, const Model3& m, const df::FrictionLaw& law, double dt,
-                              const Vector12d& di, const Vector12d& dj, bool hold,
-                              bool& settled);
+// `springs`: the contact's joint's (ContactSprings3).
+ContactState3 update_contact3(Contact3& c, const Model3& m, const ContactSprings3& springs,
+                              const df::FrictionLaw& law, double dt, const Vector12d& di, const Vector12d& dj,
+                              bool hold, bool& settled);
 
 // What a friction law sees at the contact (normal force and slip speed of
 // the last iterate); slip_sign3 is +1 / -1 for slip along / against the
@@ -396,6 +419,8 @@ class Simulation3 {
   const df::FrictionLaw& law_of(const Contact3& c) const {
     return settling_stuck_ ? *df::stuck_friction() : *friction_[static_cast<size_t>(c.joint)];
   }
+  // The contact's springs: its joint's penalties and normal law.
+  const ContactSprings3& springs_of(const Contact3& c) const { return springs_[static_cast<size_t>(c.joint)]; }
   // Control3::initial_equilibrium (settle3d.cpp): both phases, and one of
   // them (solves spent, negative when it did not come to rest).
   void settle();
@@ -422,6 +447,7 @@ class Simulation3 {
   double dt_ = 0;   // current step of advance()
   double w0_ = 1;   // m, the reference length of the displacement limit
   std::vector<std::unique_ptr<df::FrictionLaw>> friction_;
+  std::vector<ContactSprings3> springs_;  // per joint index, as friction_
   std::vector<std::vector<int>> fixed_of_block_, loads_of_block_;  // point indices per block
   std::vector<Vec3> fixed_at_, load_at_, measure_at_;              // where the material points are now
   std::vector<std::vector<MeasurementSample3>> histories_;
