@@ -1,7 +1,7 @@
 #pragma once
-// The energy ledger's bookkeeping, once for the 2D and the 3D solver
-// (docs/formulation.md, "Energy ledger"; the record and its checks are
-// dda/df/energy.hpp). Internal to df/src.
+// The energy ledger's bookkeeping, once for the 2D and the 3D solver (the
+// record, its terms and its checks: dda/df/energy.hpp; docs/solver3d.md,
+// "Energy ledger"). Internal to df/src.
 //
 // A run's log holds record 0, the stored energy of the state the run starts
 // from, then one record per accepted step. A step's record is opened from
@@ -18,10 +18,12 @@
 //
 // The order of the sums is part of the result: every term is added to its
 // column in turn, in a fixed order (blocks in block order, then the
-// kernel's list, each list in model or contact order), never summed apart
-// first; the per-block terms are evaluated in parallel and added serially.
-// So the ledger is the same bit for bit on any number of threads, and a
-// kernel that keeps its list in order keeps its results.
+// kernel's list, each list in model or contact order); the per-block terms
+// are evaluated in parallel and added serially. So the ledger is the same
+// bit for bit on any number of threads, and a kernel that keeps its list
+// in order keeps its results (the 2D and 3D lists differ in order where
+// their files did, e.g. 2D books the body acceleration after the water,
+// 3D with the blocks: results.h5's energy columns stayed bit for bit).
 //
 // A new load, loss or stored part is one line in each kernel's list; its
 // column is named by the book's function it calls.
