@@ -74,8 +74,7 @@ void Simulation::restore(const SimulationState& s) {
   solver_->set_warm_start(s.solver_warm_start);
   bolts_ = s.bolts;
   bolt_histories_ = s.bolt_histories;
-  energy_log_ = s.energy_log;
-  energy_start_ = s.energy_log.front();  // init_physics() keeps the starting state as record 0
+  energy_log_ = s.energy_log;  // record 0 is the starting state (start_energy())
   started_ = s.started;
 }
 

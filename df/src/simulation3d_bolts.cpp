@@ -114,13 +114,14 @@ Eigen::VectorXd Simulation3::solve_system(const Eigen::VectorXd& f, double dt) {
 }
 
 void Simulation3::advance_bolts(const std::vector<Vector12d>& d, const std::vector<Vec3>& old_centroid) {
+  bolt_released_.assign(bolts_.size(), 0.0);  // booked when the ledger closes the step
   for (std::size_t k = 0; k < bolts_.size(); ++k) {
     const Bolt3& b = model_.bolts[k];
     BoltState3& s = bolts_[k];
     const auto a = static_cast<std::size_t>(b.anchor_block), h = static_cast<std::size_t>(b.head_block);
     s.anchor = move_point(old_centroid[a], d[a], s.anchor);
     s.head = move_point(old_centroid[h], d[h], s.head);
-    energy_log_.back().breakage += df::update_bolt_force(b, s);
+    bolt_released_[k] = df::update_bolt_force(b, s);
     bolt_histories_[k].push_back(df::bolt_sample(time_, s));
   }
 }
@@ -141,12 +142,6 @@ double Simulation3::bolt_ground_work(const std::vector<Vector12d>& d) const {
     if (h_moved) work += force * e.head.dot(d[h]);
   }
   return work;
-}
-
-double Simulation3::stored_bolt_energy() const {
-  double sum = 0;
-  for (std::size_t k = 0; k < bolts_.size(); ++k) sum += df::bolt_energy(model_.bolts[k], bolts_[k]);
-  return sum;
 }
 
 }  // namespace dda::df3

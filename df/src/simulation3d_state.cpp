@@ -61,7 +61,6 @@ void Simulation3::restore(const Simulation3State& s) {
     start_energy();
   } else {
     energy_log_ = s.energy_log;
-    energy_start_ = energy_log_.front();
   }
 }
 

@@ -5,6 +5,7 @@
 
 #include "dda/common/error.hpp"
 #include "dda/df/simulation3d.hpp"
+#include "energy_ledger.hpp"
 #include "simulation3d_assembly.hpp"
 
 namespace dda::df3 {
@@ -52,14 +53,14 @@ void Simulation3::add_viscous_terms(double dt, Assembly3& sys) const {
 // As 2D: the dashpots' absorption is radiation, the work of the traction
 // from outside (the incident wave's on the base, the free field's on the
 // sides) counts with the loads.
-void Simulation3::add_viscous_work(const std::vector<Vector12d>& d, double dt, df::EnergyRecord& e) const {
+void Simulation3::add_viscous_work(const std::vector<Vector12d>& d, double dt, df::WorkBook& book) const {
   for (const ViscousFace3& face : model_.viscous->faces) {
     const auto b = static_cast<std::size_t>(face.block);
     if (dof_[b] < 0) continue;
     const ViscousFaceEnergy w =
         viscous_face_energy(model_.blocks[b], face.face, model_.material_of(b), face_traction(face, dt), d[b], dt);
-    e.radiation += w.absorbed;
-    e.load_work += w.input_work;
+    book.radiation(w.absorbed);
+    book.loads(w.input_work);
   }
 }
 

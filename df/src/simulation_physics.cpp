@@ -1,5 +1,6 @@
-// Physics extensions of the time stepper: bolts and the energy ledger
-// (members of Simulation kept out of simulation.cpp, which is shared).
+// Physics extensions of the time stepper: bolts and the energy ledger's 2D
+// kernel (members of Simulation kept out of simulation.cpp, which is
+// shared). The ledger's bookkeeping is energy_ledger.hpp's, shared with 3D.
 #include <cmath>
 #include <cstddef>
 #include <vector>
@@ -7,6 +8,7 @@
 #include "dda/df/simulation.hpp"
 #include "dda/df/viscous_boundary.hpp"
 #include "block_terms.hpp"
+#include "energy_ledger.hpp"
 #include "water_faces.hpp"
 
 namespace dda::df {
@@ -66,16 +68,7 @@ void Simulation::init_physics() {
   for (std::size_t k = 0; k < bolts_.size(); ++k) {
     bolt_histories_[k].push_back(bolt_sample(time_, bolts_[k]));
   }
-  // Stored energy of the starting state; the work sums start at zero.
-  EnergyRecord e;
-  e.time = time_;
-  std::vector<ContactEnergy> terms(contacts_.size());
-  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(contacts_.size());
-#pragma omp parallel for schedule(static) if (model_.block_count() > parallel_grain())
-  for (std::ptrdiff_t k = 0; k < n; ++k) terms[k] = contact_energy(contacts_[k], Vector6d::Zero(), Vector6d::Zero());
-  store_energy(e, terms);
-  energy_start_ = e;
-  energy_log_.assign(1, e);
+  start_energy();
 }
 
 void Simulation::assemble_physics(double dt) {
@@ -129,122 +122,138 @@ Simulation::ContactEnergy Simulation::contact_energy(const Contact& c, const Vec
   return t;
 }
 
+// The 2D kernel of the energy ledger (energy_ledger.hpp): per unit
+// thickness, the blocks' six unknowns, the contacts' terms as accept()
+// evaluated them in its pass over the contacts.
+struct Simulation::EnergyTerms {
+  struct Step {
+    const Eigen::VectorXd& d;  // the step's increments, kDofs per block
+    double dt;
+    double beta;  // of the viscous damping (damping_beta())
+    Vector6d of(int block) const { return d.segment<kDofs>(kDofs * block); }
+  };
+  const Simulation& s;
+  const std::vector<ContactEnergy>& contacts;  // one per contact of s.contacts_
+
+  std::size_t block_count() const { return static_cast<std::size_t>(s.model_.block_count()); }
+
+  BlockEnergy block_energy(std::size_t i) const {
+    const BlockState& b = s.blocks_[i];
+    const int mat = s.model_.block_material[i];
+    const double twice_kinetic = b.velocity.dot(mass_matrix(b.geometry, s.model_.materials[mat].density) * b.velocity);
+    return {0.5 * twice_kinetic, strain_energy(b, s.compliance_[mat])};
+  }
+
+  BlockWork block_work(std::size_t i, const Step& step) const {
+    const BlockState& b = s.blocks_[i];
+    const int m = s.model_.block_material[i];
+    const Vector6d di = step.of(static_cast<int>(i));
+    // The kinetic energy a dynamic parameter k < 1 takes from the end
+    // velocity v1, and the work of the damping stress, beta/dt S de' E de.
+    const Vector6d v1 = 2.0 / step.dt * di - b.velocity;
+    const double twice_kinetic = v1.dot(mass_matrix(b.geometry, s.model_.materials[m].density) * v1);
+    double viscous = 0;
+    if (step.beta > 0) {
+      const Vector3d de = di.tail<3>();
+      viscous = step.beta / step.dt * b.geometry.area * de.dot(s.emat_[m] * de);
+    }
+    const double k = s.model_.control.dynamic;
+    BlockWork w;
+    w.damping = (1 - k * k) * 0.5 * twice_kinetic + viscous;
+    w.gravity = b.geometry.area * s.model_.materials[m].density * s.model_.gravity.dot(di.head<2>());
+    return w;  // the body acceleration is in the term list, after the water
+  }
+
+  // Every force term as assembled (F . T d), so that for a block without
+  // contacts the change of kinetic energy equals the work done.
+  void book_step_terms(const Step& step, WorkBook& book) const {
+    const Model& model = s.model_;
+    const double t0 = s.time_, t1 = s.time_ + step.dt;
+    for (std::size_t k = 0; k < model.loads.size(); ++k) {  // point loads
+      const PointLoad& l = model.loads[k];
+      const Vec2 u = t_matrix(s.blocks_[l.block].geometry.centroid, s.load_pos_[k]) * step.of(l.block);
+      book.loads(load_force(l, t0, t1).dot(u));
+    }
+    for (const WaterLoad<2>& l : s.water_loads_)  // the joint water
+      book.loads(l.force.dot(t_matrix(s.blocks_[l.block].geometry.centroid, l.at) * step.of(l.block)));
+    if (const auto& ba = model.body_acceleration) {  // rho S b . u_c of every shaken block
+      const Vec2 b = step_body_acceleration(*ba, t0, step.dt, s.settling_);
+      for (const int i : ba->blocks)
+        book.loads(s.blocks_[i].geometry.area * model.materials[model.block_material[i]].density *
+                   b.dot(step.of(i).head<2>()));
+    }
+    for (std::size_t k = 0; k < model.fixed_points.size(); ++k) {
+      // A moving fixed point does work on its spring: the change of the
+      // spring's energy plus the work the spring does on the block.
+      const FixedPoint& f = model.fixed_points[k];
+      const Vec2 u = t_matrix(s.blocks_[f.block].geometry.centroid, s.fixed_pos_[k]) * step.of(f.block);
+      const Vec2 gap0 = fixed_point_target(f, s.fixed_anchor_[k], t0) - s.fixed_pos_[k];
+      const Vec2 gap1 = fixed_point_target(f, s.fixed_anchor_[k], t1) - s.fixed_pos_[k] - u;
+      const double p = *f.penalty;
+      book.loads(0.5 * p * (gap1.squaredNorm() - gap0.squaredNorm()) + p * gap1.dot(u));
+    }
+    if (const auto& vb = model.viscous_boundary) {  // the dashpots' loss; an incident wave's work with the loads
+      for (const ViscousEdge& ve : vb->edges) {
+        const BlockState& b = s.blocks_[ve.block];
+        const Eigen::Matrix2d dashpot = s.edge_dashpot(ve);
+        const ViscousEdgeEnergy w = viscous_edge_energy(b.vertices, b.geometry.centroid, ve.edge, dashpot,
+                                                        s.edge_traction(ve, dashpot, step.dt), step.of(ve.block),
+                                                        step.dt);
+        book.radiation(w.absorbed);
+        book.loads(w.input_work);
+      }
+    }
+    for (const ContactEnergy& t : contacts) book.friction(t.friction_loss);  // zero unless sliding
+  }
+
+  void book_released(WorkBook& book) const {
+    for (const double released : s.bolt_released_) book.breakage(released);
+  }
+
+  // Normal and shear springs as two terms, one after the other in contact
+  // order.
+  void book_springs(SpringBook& book) const {
+    for (const ContactEnergy& t : contacts) {
+      book.contact(t.normal);
+      book.contact(t.shear);
+    }
+    for (std::size_t k = 0; k < s.model_.fixed_points.size(); ++k) {
+      const FixedPoint& f = s.model_.fixed_points[k];
+      book.fixed(0.5 * *f.penalty *
+                 (fixed_point_target(f, s.fixed_anchor_[k], s.time_) - s.fixed_pos_[k]).squaredNorm());
+    }
+    for (std::size_t k = 0; k < s.bolts_.size(); ++k) book.bolts(bolt_energy(s.model_.bolts[k], s.bolts_[k]));
+  }
+};
+
+void Simulation::start_energy() {
+  // The contacts' springs as they stand (no step: no friction loss).
+  std::vector<ContactEnergy> terms(contacts_.size());
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(contacts_.size());
+#pragma omp parallel for schedule(static) if (model_.block_count() > parallel_grain())
+  for (std::ptrdiff_t k = 0; k < n; ++k) terms[k] = contact_energy(contacts_[k], Vector6d::Zero(), Vector6d::Zero());
+  static_assert(EnergyKernel<EnergyTerms>);
+  start_energy_log(energy_log_, EnergyTerms{*this, terms}, time_);
+}
+
 void Simulation::before_accept(double dt, const Eigen::VectorXd& d) {
-  // Work and losses of the step, from the configuration at its start. Every
-  // force term is taken exactly as assembled (F . T d), so that for a block
-  // without contacts the change of kinetic energy equals the work done.
-  EnergyRecord e = energy_log_.back();
-  auto di = [&](int i) { return Vector6d(d.segment<kDofs>(kDofs * i)); };
-  // The mass products per block in parallel; the sums serially, in block
-  // order (the same on any number of threads).
-  const int nb = model_.block_count();
-  std::vector<double> twice_kinetic(nb);  // v1' M v1
-  std::vector<double> viscous(nb);        // the work of the damping stress, beta/dt S de' E de
-  const double beta = damping_beta();
-#pragma omp parallel for schedule(static) if (nb > parallel_grain())
-  for (int i = 0; i < nb; ++i) {
-    const BlockState& b = blocks_[i];
-    const int m = model_.block_material[i];
-    const Vector6d v1 = 2.0 / dt * di(i) - b.velocity;
-    twice_kinetic[i] = v1.dot(mass_matrix(b.geometry, model_.materials[m].density) * v1);
-    if (beta > 0) {
-      const Vector3d de = di(i).tail<3>();
-      viscous[i] = beta / dt * b.geometry.area * de.dot(emat_[m] * de);
-    }
-  }
-  for (int i = 0; i < nb; ++i) {
-    const BlockState& b = blocks_[i];
-    const Material& mat = model_.materials[model_.block_material[i]];
-    const double k = model_.control.dynamic;
-    e.damping += (1 - k * k) * 0.5 * twice_kinetic[i] + viscous[i];
-    e.gravity_work += b.geometry.area * mat.density * model_.gravity.dot(di(i).head<2>());
-  }
-  for (std::size_t k = 0; k < model_.loads.size(); ++k) {
-    const PointLoad& l = model_.loads[k];
-    const Vec2 u = t_matrix(blocks_[l.block].geometry.centroid, load_pos_[k]) * di(l.block);
-    e.load_work += load_force(l, time_, time_ + dt).dot(u);
-  }
-  for (const WaterLoad<2>& l : water_loads_)  // the joint water, counted with the loads
-    e.load_work += l.force.dot(t_matrix(blocks_[l.block].geometry.centroid, l.at) * di(l.block));
-  if (const auto& ba = model_.body_acceleration) {  // counted with the loads
-    const Vec2 b = step_body_acceleration(*ba, time_, dt, settling_);
-    for (const int i : ba->blocks)
-      e.load_work += blocks_[i].geometry.area * model_.materials[model_.block_material[i]].density *
-                     b.dot(di(i).head<2>());
-  }
-  for (std::size_t k = 0; k < model_.fixed_points.size(); ++k) {
-    // A moving fixed point does work on its spring: the change of the
-    // spring's energy plus the work the spring does on the block.
-    const FixedPoint& f = model_.fixed_points[k];
-    const Vec2 u = t_matrix(blocks_[f.block].geometry.centroid, fixed_pos_[k]) * di(f.block);
-    const Vec2 gap0 = fixed_point_target(f, fixed_anchor_[k], time_) - fixed_pos_[k];
-    const Vec2 gap1 = fixed_point_target(f, fixed_anchor_[k], time_ + dt) - fixed_pos_[k] - u;
-    const double p = *f.penalty;
-    e.load_work += 0.5 * p * (gap1.squaredNorm() - gap0.squaredNorm()) + p * gap1.dot(u);
-  }
-  if (const auto& vb = model_.viscous_boundary) {
-    for (const ViscousEdge& ve : vb->edges) {
-      const BlockState& b = blocks_[ve.block];
-      const Eigen::Matrix2d dashpot = edge_dashpot(ve);
-      const ViscousEdgeEnergy w = viscous_edge_energy(b.vertices, b.geometry.centroid, ve.edge, dashpot,
-                                                      edge_traction(ve, dashpot, dt), di(ve.block), dt);
-      e.radiation += w.absorbed;
-      e.load_work += w.input_work;
-    }
-  }
-  // Summed serially in contact order (the same on any number of threads);
-  // adding the zero of a contact not sliding leaves the sum as it was.
-  for (const ContactEnergy& t : contact_energy_) e.friction += t.friction_loss;
+  // The bolts' ends ride with their blocks (from the centroids at the
+  // step's start); a bolt that breaks lets go of its energy.
+  bolt_released_.assign(bolts_.size(), 0.0);
   for (std::size_t k = 0; k < bolts_.size(); ++k) {
     const Bolt& b = model_.bolts[k];
-    BoltState& s = bolts_[k];
     const Vec2 ca = blocks_[b.anchor_block].geometry.centroid, ch = blocks_[b.head_block].geometry.centroid;
-    if (const double released = advance_bolt(b, s, ca, di(b.anchor_block), ch, di(b.head_block)); released > 0)
-      e.breakage += released;
+    bolt_released_[k] = advance_bolt(b, bolts_[k], ca, d.segment<kDofs>(kDofs * b.anchor_block), ch,
+                                     d.segment<kDofs>(kDofs * b.head_block));
   }
-  energy_log_.push_back(e);
+  open_step_record(energy_log_, EnergyTerms{*this, contact_energy_}, EnergyTerms::Step{d, dt, damping_beta()});
 }
 
 void Simulation::after_accept(double /*dt*/) {
   for (std::size_t k = 0; k < bolts_.size(); ++k) {
     bolt_histories_[k].push_back(bolt_sample(time_, bolts_[k]));
   }
-  // Stored energy at the end of the step.
-  EnergyRecord& e = energy_log_.back();
-  e.time = time_;
-  store_energy(e, contact_energy_);
-  e.residual =
-      e.input() - (e.stored() - energy_start_.stored()) - e.friction - e.damping - e.breakage - e.radiation;
-}
-
-void Simulation::store_energy(EnergyRecord& e, const std::vector<ContactEnergy>& contacts) const {
-  e.kinetic = e.elastic = e.contact = e.fixed = e.bolts = 0;
-  // The per-block terms in parallel; the sums serially, in block order (the
-  // same on any number of threads).
-  const int nb = model_.block_count();
-  std::vector<double> twice_kinetic(nb), strain(nb);  // v' M v, strain energy
-#pragma omp parallel for schedule(static) if (nb > parallel_grain())
-  for (int i = 0; i < nb; ++i) {
-    const BlockState& b = blocks_[i];
-    const int mat = model_.block_material[i];
-    twice_kinetic[i] = b.velocity.dot(mass_matrix(b.geometry, model_.materials[mat].density) * b.velocity);
-    strain[i] = strain_energy(b, compliance_[mat]);
-  }
-  for (int i = 0; i < nb; ++i) {
-    e.kinetic += 0.5 * twice_kinetic[i];
-    e.elastic += strain[i];
-  }
-  // Normal and shear springs as two terms, added one after the other in
-  // contact order (a zero term leaves the sum as it was).
-  for (const ContactEnergy& t : contacts) {
-    e.contact += t.normal;
-    e.contact += t.shear;
-  }
-  for (std::size_t k = 0; k < model_.fixed_points.size(); ++k) {
-    const FixedPoint& f = model_.fixed_points[k];
-    e.fixed += 0.5 * *f.penalty * (fixed_point_target(f, fixed_anchor_[k], time_) - fixed_pos_[k]).squaredNorm();
-  }
-  for (std::size_t k = 0; k < bolts_.size(); ++k) e.bolts += bolt_energy(model_.bolts[k], bolts_[k]);
+  close_step_record(energy_log_, EnergyTerms{*this, contact_energy_}, time_);
 }
 
 }  // namespace dda::df

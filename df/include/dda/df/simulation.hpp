@@ -233,13 +233,17 @@ class Simulation {
     double friction_loss = 0, normal = 0, shear = 0;
   };
   ContactEnergy contact_energy(const Contact& c, const Vector6d& di, const Vector6d& dj) const;
-  // Work and losses of the step; contact_energy_ holds the step's contacts'
-  // terms (accept() fills it in its one pass over the contacts).
+  // The energy ledger's 2D kernel (simulation_physics.cpp; the bookkeeping
+  // is energy_ledger.hpp's, shared with 3D).
+  struct EnergyTerms;
+  // Record 0 of the ledger, from the current state (init_physics).
+  void start_energy();
+  // The bolts moved with their blocks (and broken), then the step's record
+  // opened with its work and losses; contact_energy_ holds the step's
+  // contacts' terms (accept() fills it in its one pass over the contacts).
   void before_accept(double dt, const Eigen::VectorXd& d);
+  // The bolts' histories, and the step's record closed.
   void after_accept(double dt);
-  // The stored energies (kinetic, elastic, contact, fixed points, bolts) of
-  // the current state into e; `contacts` holds the terms of contacts_.
-  void store_energy(EnergyRecord& e, const std::vector<ContactEnergy>& contacts) const;
   void settle();
   // One phase of settle(): static pseudo-steps until no vertex moves more
   // than the tolerance (start_up_relax.hpp's rules).
@@ -296,11 +300,11 @@ class Simulation {
   double max_step_displacement_ = 0;                    // g2 * w0
   int step_count_ = 0;
   std::vector<BoltState> bolts_;
+  std::vector<double> bolt_released_;  // J per unit thickness a bolt let go when it broke in this step (the ledger's breakage)
   std::vector<std::vector<BoltSample>> bolt_histories_;
   // The joint water's loads of the step being assembled (empty without water).
   std::vector<WaterLoad<2>> water_loads_;
-  std::vector<EnergyRecord> energy_log_;
-  EnergyRecord energy_start_;          // stored energy at t = 0 (in the stored fields)
+  std::vector<EnergyRecord> energy_log_;  // record 0: the stored energy the run starts from
   bool started_ = false;               // settle() has run (or was not asked for)
   bool settling_ = false;              // before t = 0, relaxing statically (settle.cpp)
   bool settling_stuck_ = false;        // and every closed contact sticks (its first phase)

@@ -41,6 +41,10 @@
 #include "dda/df/step_timings.hpp"
 #include "dda/df/viscous_boundary3.hpp"
 
+namespace dda::df {
+class WorkBook;  // df/src/energy_ledger.hpp
+}  // namespace dda::df
+
 namespace dda::df3 {
 
 // Time stepping of Simulation3::advance / run (the 2D Control's rules).
@@ -385,7 +389,7 @@ class Simulation3 {
   // Rock bolts (simulation3d_bolts.cpp): checked and started in the
   // constructor; their pairs in K's pattern, their springs in K and F, K's
   // solve with their coupling; moved with their blocks (and broken) at the
-  // end of a step; the ground's work on them and their stored energy.
+  // end of a step (bolt_released_); the ground's work on them.
   void start_bolts();
   void restart_bolt_histories();
   void add_bolt_pairs(std::vector<std::pair<int, int>>& pairs) const;
@@ -393,7 +397,6 @@ class Simulation3 {
   Eigen::VectorXd solve_system(const Eigen::VectorXd& f, double dt);
   void advance_bolts(const std::vector<Vector12d>& d, const std::vector<Vec3>& old_centroid);
   double bolt_ground_work(const std::vector<Vector12d>& d) const;
-  double stored_bolt_energy() const;
   // The viscous boundary (simulation3d_waves.cpp): checked in the
   // constructor; its dashpots and incident traction in K and F; their
   // energy in the step's ledger record.
@@ -401,19 +404,21 @@ class Simulation3 {
   // The traction from outside on a face over the step (empty while settling).
   FaceTraction face_traction(const ViscousFace3& face, double dt) const;
   void add_viscous_terms(double dt, Assembly3& sys) const;
-  void add_viscous_work(const std::vector<Vector12d>& d, double dt, df::EnergyRecord& e) const;
+  void add_viscous_work(const std::vector<Vector12d>& d, double dt, df::WorkBook& book) const;
   // Bonds (simulation3d_bonds.cpp): until the first accepted solve, every
   // detection bonds the contacts of bonded joints in touch, each with its
   // share of the patch, and closes them.
   void place_bonds();
-  // The energy ledger (simulation3d_energy.cpp): started afresh from the
-  // current state; a step's work and losses, taken from the configuration
-  // at its start with the forces as assembled (before finish_step moves the
-  // blocks); then the stored energy at its end and the residual.
+  // The energy ledger (its 3D kernel in simulation3d_energy.cpp, the
+  // bookkeeping energy_ledger.hpp's, shared with 2D): started afresh from
+  // the current state; a step's work and losses, taken from the
+  // configuration at its start with the forces as assembled (before
+  // finish_step moves the blocks); then the stored energy at its end and
+  // the residual.
+  struct EnergyTerms;
   void start_energy();
   void add_step_work(const std::vector<Vector12d>& d, double dt);
   void close_energy_record();
-  void store_energy(df::EnergyRecord& e) const;
   // The law the open-close iteration uses: the joint's, or while the model
   // settles with its contacts stuck, one that never lets go.
   const df::FrictionLaw& law_of(const Contact3& c) const {
@@ -441,8 +446,7 @@ class Simulation3 {
   // searches ago, and the contacts at the start of advance()'s step.
   std::vector<Contact3> spare_contacts_, start_contacts_;
   std::vector<StepInfo3> log_;
-  std::vector<df::EnergyRecord> energy_log_;
-  df::EnergyRecord energy_start_;  // the stored energy the ledger counts changes from
+  std::vector<df::EnergyRecord> energy_log_;  // record 0: the stored energy the ledger counts changes from
   std::vector<df::WaterLoad<3>> water_loads_;  // the joint water's loads of the step (assemble), for the ledger
   double dt_ = 0;   // current step of advance()
   double w0_ = 1;   // m, the reference length of the displacement limit
@@ -452,6 +456,7 @@ class Simulation3 {
   std::vector<Vec3> fixed_at_, load_at_, measure_at_;              // where the material points are now
   std::vector<std::vector<MeasurementSample3>> histories_;
   std::vector<BoltState3> bolts_;
+  std::vector<double> bolt_released_;  // J a bolt let go when it broke in this step (advance_bolts; the ledger's breakage)
   std::vector<std::vector<df::BoltSample>> bolt_histories_;
   double time_ = 0;
   // K's lower triangle, its pattern kept while the contacts join the same
