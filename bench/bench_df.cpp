@@ -58,12 +58,12 @@
 #include "dda/common/memory_policy.hpp"
 #include "dda/common/model_io.hpp"
 #include "dda/common/yaml_reader.hpp"
-#include "dda/df/import_ana.hpp"
-#include "dda/df/linear_solver.hpp"
-#include "dda/df/model.hpp"
-#include "dda/df/results.hpp"
-#include "dda/df/scenario.hpp"
-#include "dda/df/simulation.hpp"
+#include "dda/df/io/import_ana.hpp"
+#include "dda/df/core/linear_solver.hpp"
+#include "dda/df/2d/model.hpp"
+#include "dda/df/io/results.hpp"
+#include "dda/df/io/scenario.hpp"
+#include "dda/df/2d/simulation.hpp"
 
 namespace {
 

@@ -45,7 +45,7 @@
 #include "dda/common/memory_policy.hpp"
 #include "dda/common/fracture_model.hpp"
 #include "dda/dc/cut3d.hpp"
-#include "dda/df/simulation3d.hpp"
+#include "dda/df/3d/simulation3d.hpp"
 #include "dda/dl/dfn3d.hpp"
 
 namespace {

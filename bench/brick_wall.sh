@@ -9,7 +9,7 @@
 # the model `dda df` would run, from the start, on THREADS threads. Prints
 # per size: blocks, contacts, global solves per step (the linear solves of
 # the whole system: the count this benchmark is about), solves on contact
-# clusters per step and their CG iterations (df/src/contact_clusters.cpp),
+# clusters per step and their CG iterations (df/src/core/contact_clusters.hpp),
 # PCG iterations per global solve, and ms per step (machine-dependent:
 # compare runs of one session, interleaved).
 #

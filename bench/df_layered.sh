@@ -14,9 +14,9 @@
 # microseconds of model time: the step control sets it, and a shorter step
 # costs less), the share of the contacts updated after a solve (updated_pct:
 # after a trial solve only those of blocks that moved, see
-# df/include/dda/df/moved_blocks.hpp), the share of the block rows whose
+# df/include/dda/df/2d/moved_blocks.hpp), the share of the block rows whose
 # residual a trial solve formed afresh (refreshed_pct: the others it took
-# over from the last solve, df/src/block_pcg.hpp), and the growth exponent
+# over from the last solve, df/src/core/block_pcg.hpp), and the growth exponent
 # of the cost between sizes, per step and per second of model time (the
 # larger models take longer steps, and a longer step costs more).
 #

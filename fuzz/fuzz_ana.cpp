@@ -3,7 +3,7 @@
 // a block on it, with the geometry's fixed, load and measured points.
 #include "dda/common/block_shape.hpp"
 #include "dda/common/geometry.hpp"
-#include "dda/df/import_ana.hpp"
+#include "dda/df/io/import_ana.hpp"
 #include "fuzz_support.hpp"
 
 namespace {

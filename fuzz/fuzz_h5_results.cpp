@@ -1,6 +1,6 @@
 // 2D results files with their checkpoint (df::read_results_h5 with the
 // state, as `dda df --resume` reads them).
-#include "dda/df/results.hpp"
+#include "dda/df/io/results.hpp"
 #include "fuzz_h5_image.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

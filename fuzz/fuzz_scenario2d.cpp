@@ -2,7 +2,7 @@
 // section: domain, joint sets, layering, lines, points; files a scenario
 // names are read too) and DF's check of its sections.
 #include "dda/common/yaml_reader.hpp"
-#include "dda/df/scenario.hpp"
+#include "dda/df/io/scenario.hpp"
 #include "dda/dl/generate.hpp"
 #include "fuzz_support.hpp"
 

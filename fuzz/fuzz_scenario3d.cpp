@@ -2,7 +2,7 @@
 // (domain, fracture sets, planes, layering, excavations, trace planes) and
 // DF's check of its 3D sections.
 #include "dda/common/yaml_reader.hpp"
-#include "dda/df/scenario3d.hpp"
+#include "dda/df/io/scenario3d.hpp"
 #include "dda/dl/scenario3d.hpp"
 #include "fuzz_support.hpp"
 

@@ -1,7 +1,7 @@
 #pragma once
 // Private to dda_common: the pieces the HDF5 files of the pipeline share
 // (2D lines and blocks in model_io.cpp; 3D fractures and blocks3d in
-// model_io3_*.cpp). Readers turn every problem into one InputError naming
+// model_io3d_*.cpp). Readers turn every problem into one InputError naming
 // the file (through h5::Reader::fail); the layout itself is documented in
 // docs/formats.md.
 #include <cstdint>

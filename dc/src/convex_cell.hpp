@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "dda/common/geometry3.hpp"
+#include "dda/common/geometry3d.hpp"
 #include "exact_plane.hpp"
 
 namespace dda::dc::cell {

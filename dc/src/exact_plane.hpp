@@ -13,7 +13,7 @@
 // fractures, three sets meeting in one point.
 #include <array>
 
-#include "dda/common/geometry3.hpp"
+#include "dda/common/geometry3d.hpp"
 
 namespace dda::dc::exact {
 

@@ -50,7 +50,7 @@ void read_points(const YamlNode& root, Builder& b);
 PointKind read_point_kind(const YamlNode& n);
 nlohmann::json point_counts(const std::vector<PointKind>& kinds);
 // An item of `points` placed on a block (it has `block`): the forward run
-// places it on the blocks DC cuts (df/src/scenario_block_points.hpp), so
+// places it on the blocks DC cuts (df/src/io/scenario_block_points.hpp), so
 // DL leaves it out of the lines; without `control` there is no forward run
 // to place it, which is an error naming the key.
 bool placed_by_block(const YamlNode& root, const YamlNode& item);

@@ -9,7 +9,7 @@
 #include "builder.hpp"  // detail::format_number
 #include "dda/common/error.hpp"
 #include "dda/dl/dfn3d.hpp"
-#include "dda/dl/polygon3.hpp"
+#include "dda/dl/polygon3d.hpp"
 
 namespace dda::dl {
 
@@ -111,9 +111,9 @@ double expected_bed_count3(const LayeringSpec3& spec, const Box3& domain) {
   return (hi - lo) / mean_thickness(spec.thickness) + 1;
 }
 
-Layering3Output generate_layering3d(const LayeringSpec3& spec, const Box3& domain, std::uint64_t seed) {
+LayeringOutput3 generate_layering3d(const LayeringSpec3& spec, const Box3& domain, std::uint64_t seed) {
   validate_box(domain, "The layered domain");
-  Layering3Output out;
+  LayeringOutput3 out;
   const Vec3 nb = normal_from_dip(spec.dip_deg, spec.dip_direction_deg);
   validate(spec, nb);
   out.bed_normal = nb;
@@ -213,7 +213,7 @@ Layering3Output generate_layering3d(const LayeringSpec3& spec, const Box3& domai
   return out;
 }
 
-void add_layering(FractureModel& model, const LayeringSpec3& spec, const Layering3Output& out) {
+void add_layering(FractureModel& model, const LayeringSpec3& spec, const LayeringOutput3& out) {
   const int base = static_cast<int>(model.sets.size());
   for (const LayerSetSpec3& s : spec.sets) model.sets.push_back({s.name, "layered"});
   model.sets.push_back({spec.bedding_set, "bedding"});

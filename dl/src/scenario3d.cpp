@@ -80,7 +80,7 @@ int scenario_dimension(const YamlNode& root) {
 DlResult3 generate_3d_from_scenario(const YamlNode& root) {
   // The sections a 3D job reads, `cutting`, which the 3D cutter reads from
   // the scenario stored in the fractures file, `output` (dda run) and the
-  // forward run's (DF reads them, df/scenario3d.hpp). load_scenario names
+  // forward run's (DF reads them, df/io/scenario3d.hpp). load_scenario names
   // the 2D-only sections more helpfully.
   root.allow({"name", "description", "seed", "dimension", "domain", "fracture_sets", "persistent_sets", "planes",
               "layering", "fracture_files", "excavations", "points", "trace_planes", "cutting", "output",

@@ -8,7 +8,7 @@
 #include "dda/common/scenario.hpp"
 #include "dda/common/triangle_mesh.hpp"
 #include "dda/dl/dfn3d.hpp"
-#include "dda/dl/polygon3.hpp"
+#include "dda/dl/polygon3d.hpp"
 #include "scenario3d_builder.hpp"
 
 namespace dda::dl::detail {

@@ -80,7 +80,7 @@ void read_layering3(const YamlNode& root, Builder3& b) {
   for (const LayerSetSpec3& s : spec.sets)
     if (s.name == spec.bedding_set) n.fail_key("bedding_set", "'" + s.name + "' is already the name of a layered set");
 
-  Layering3Output out;
+  LayeringOutput3 out;
   try {
     out = generate_layering3d(spec, b.model.domain, b.seed);
   } catch (const InputError& e) {

@@ -3,9 +3,9 @@
 #include <cmath>
 
 #include "dda/dl/dfn3d.hpp"
-#include "dda/dl/fracture_measures3.hpp"
+#include "dda/dl/fracture_measures3d.hpp"
 #include "dda/dl/fractures3d.hpp"
-#include "dda/dl/polygon3.hpp"
+#include "dda/dl/polygon3d.hpp"
 #include "scenario3d_builder.hpp"
 
 namespace dda::dl::detail {

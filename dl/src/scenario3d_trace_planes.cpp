@@ -4,7 +4,7 @@
 
 #include "builder.hpp"
 #include "dda/dl/dfn3d.hpp"
-#include "dda/dl/polygon3.hpp"
+#include "dda/dl/polygon3d.hpp"
 #include "scenario3d_builder.hpp"
 
 namespace dda::dl::detail {

@@ -10,7 +10,7 @@
 #include "builder.hpp"  // detail::format_number
 #include "dda/common/error.hpp"
 #include "dda/dl/dfn3d.hpp"
-#include "dda/dl/polygon3.hpp"
+#include "dda/dl/polygon3d.hpp"
 
 namespace dda::dl {
 

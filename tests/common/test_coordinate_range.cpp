@@ -12,7 +12,7 @@
 #include "dda/common/error.hpp"
 #include "dda/common/geometry.hpp"
 #include "dda/common/model_io.hpp"
-#include "dda/common/model_io3.hpp"
+#include "dda/common/model_io3d.hpp"
 #include "input_error_of.hpp"
 #include "scratch_dir_test.hpp"
 

@@ -1,7 +1,7 @@
 #pragma once
 // The 2D models and results of the results, checkpoint and writer tests
-// (the 3D ones are in df3_io_test_models.hpp).
-#include "dda/df/results.hpp"
+// (the 3D ones are in df_io_test_models3d.hpp).
+#include "dda/df/io/results.hpp"
 #include "df_test_models.hpp"
 
 namespace dda::df::test {

@@ -7,7 +7,7 @@
 #include "dda/common/block_model.hpp"
 #include "dda/common/block_shape.hpp"
 #include "dda/common/geometry.hpp"
-#include "dda/df/model.hpp"
+#include "dda/df/2d/model.hpp"
 
 namespace dda::df::test {
 

@@ -11,7 +11,7 @@
 #include "df_test_models.hpp"
 #include "dda/common/block_model.hpp"
 #include "dda/common/yaml_reader.hpp"
-#include "dda/df/scenario.hpp"
+#include "dda/df/io/scenario.hpp"
 
 namespace dda::df::test {
 

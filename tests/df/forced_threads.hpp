@@ -4,7 +4,7 @@
 // dozen blocks (parallel_grain 1); both are restored when it ends.
 #include <omp.h>
 
-#include "dda/df/block_system.hpp"
+#include "dda/df/core/block_system.hpp"
 
 namespace dda::df::testing {
 

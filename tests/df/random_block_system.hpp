@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "dda/df/block_system.hpp"
+#include "dda/df/core/block_system.hpp"
 
 namespace dda::df::test {
 

@@ -9,7 +9,7 @@
 // above the run's stresses, so the slab stays one body unless a bond breaks.
 #include <string>
 
-#include "dda/df/model.hpp"
+#include "dda/df/2d/model.hpp"
 #include "df_test_models.hpp"
 
 namespace dda::df::test {

@@ -7,7 +7,7 @@
 #include <map>
 #include <string>
 
-#include "dda/df/model.hpp"
+#include "dda/df/2d/model.hpp"
 #include "df_test_models.hpp"
 
 namespace dda::df::test {

@@ -1,6 +1,6 @@
 #pragma once
 // The wave tests' input, in 2D and 3D (wave_test_models.hpp,
-// wave_test_models3.hpp): a sine of `amplitude` and angular frequency
+// wave_test_models3d.hpp): a sine of `amplitude` and angular frequency
 // `omega` for `cycles` cycles, ramped in and out over one cycle each with a
 // Hann taper (sin^2), sampled 80 times a cycle, then rest. `emit(t, value)`
 // takes each sample.

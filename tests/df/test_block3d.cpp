@@ -1,4 +1,4 @@
-// The 3D block's kinematics and 12x12 matrices (df/block3d.hpp). Expected
+// The 3D block's kinematics and 12x12 matrices (df/3d/block3d.hpp). Expected
 // numbers are closed forms or quadratures that do not use the second
 // moments, so they check the exact integrals independently.
 #include <gtest/gtest.h>
@@ -10,7 +10,7 @@
 #include <numbers>
 #include <vector>
 
-#include "dda/df/block3d.hpp"
+#include "dda/df/3d/block3d.hpp"
 
 namespace dda::df3 {
 namespace {

@@ -1,5 +1,5 @@
 // Measurement points placed by block (`points` items with `block`;
-// df/src/scenario_block_points.hpp) in 2D: where they start (the block's
+// df/src/io/scenario_block_points.hpp) in 2D: where they start (the block's
 // centroid, computed here by hand), that they ride with their block (the
 // same displacement as an explicit point at the same place, and the
 // analytical slide), and one sentence for each mistake. 3D:
@@ -11,8 +11,8 @@
 #include <string>
 
 #include "../common/input_error_of.hpp"
-#include "dda/df/scenario.hpp"
-#include "dda/df/simulation.hpp"
+#include "dda/df/io/scenario.hpp"
+#include "dda/df/2d/simulation.hpp"
 #include "df_test_models.hpp"
 
 namespace dda::df {

@@ -1,5 +1,5 @@
 // Measurement points placed by block (`points` items with `block`;
-// df/src/scenario_block_points.hpp) in 3D, on the V4 wedge cut by DC:
+// df/src/io/scenario_block_points.hpp) in 3D, on the V4 wedge cut by DC:
 // where they start (the wedge's centroid by the tetrahedron formula), that
 // they ride with the wedge (the same displacement as an explicit point at
 // the same place, and the analytical slide), and one sentence for each
@@ -13,8 +13,8 @@
 #include "../common/input_error_of.hpp"
 #include "../dc/dc3d_test_util.hpp"
 #include "dda/dc/cut3d.hpp"
-#include "dda/df/scenario3d.hpp"
-#include "dda/df/simulation3d.hpp"
+#include "dda/df/io/scenario3d.hpp"
+#include "dda/df/3d/simulation3d.hpp"
 #include "dda/dl/dfn3d.hpp"
 
 namespace dda::df3 {

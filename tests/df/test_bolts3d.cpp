@@ -1,4 +1,4 @@
-// Rock bolts in the 3D solver (df/bolts3d.hpp, the law in df/bolt_law.hpp).
+// Rock bolts in the 3D solver (df/3d/bolts3d.hpp, the law in df/core/bolt_law.hpp).
 //
 // The model: a fixed 1 m cube (the roof, z in [2, 3]) and a free 1 m cube
 // below it (z in [0, 1]), 1 m apart so that they never touch; a vertical
@@ -24,10 +24,10 @@
 #include <memory>
 
 #include "dda/common/error.hpp"
-#include "dda/df/ground_motion3.hpp"
-#include "dda/df/results3d.hpp"
-#include "dda/df/simulation3d.hpp"
-#include "df3_test_models.hpp"
+#include "dda/df/3d/ground_motion3d.hpp"
+#include "dda/df/io/results3d.hpp"
+#include "dda/df/3d/simulation3d.hpp"
+#include "df_test_models3d.hpp"
 
 namespace dda::df3 {
 namespace {
@@ -240,7 +240,7 @@ TEST(Bolts3d, GroundMovingTheFixedEndDragsTheCubeAndItsWorkIsBooked) {
   Model3 m = hanging_cube(dt);
   m.gravity = {0, 0, 0};
   m.earthquake = {std::make_shared<GroundMotion3>(std::vector<double>{0, 1}, std::vector<Vec3>{{0, 0, a}, {0, 0, a}}),
-                  make_ground_input_mode3("displacement")};
+                  make_ground_motion_mode3("displacement")};
   Simulation3 sim(m);
   run_for(sim, dt, static_cast<int>(0.75 * period / dt));
   const auto& h = sim.bolt_histories()[0];

@@ -1,4 +1,4 @@
-// The 3D broad phase (df/broad_phase3d.hpp) against brute force: random boxes
+// The 3D broad phase (df/3d/broad_phase3d.hpp) against brute force: random boxes
 // of mixed sizes, a few far larger than the rest (a base, a long wall), with
 // any number of threads; and the parallel parts of the 3D step that use it
 // (contact detection over the candidate pairs, block terms) giving the same
@@ -8,11 +8,11 @@
 
 #include <random>
 
-#include "df3_test_models.hpp"
+#include "df_test_models3d.hpp"
 #include "forced_threads.hpp"
-#include "dda/df/block_system.hpp"
-#include "dda/df/broad_phase3d.hpp"
-#include "dda/df/simulation3d.hpp"
+#include "dda/df/core/block_system.hpp"
+#include "dda/df/3d/broad_phase3d.hpp"
+#include "dda/df/3d/simulation3d.hpp"
 
 namespace dda::df3 {
 namespace {

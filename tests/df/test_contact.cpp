@@ -11,12 +11,12 @@
 
 #include "df_test_models.hpp"
 #include "forced_threads.hpp"
-#include "dda/df/block_kinematics.hpp"
-#include "dda/df/block_system.hpp"
-#include "dda/df/broad_phase.hpp"
-#include "dda/df/contact.hpp"
-#include "dda/df/contact_detection.hpp"
-#include "dda/df/friction.hpp"
+#include "dda/df/2d/block_kinematics.hpp"
+#include "dda/df/core/block_system.hpp"
+#include "dda/df/core/broad_phase.hpp"
+#include "dda/df/2d/contact.hpp"
+#include "dda/df/2d/contact_detection.hpp"
+#include "dda/df/core/friction.hpp"
 
 namespace dda::df {
 namespace {

@@ -1,4 +1,4 @@
-// 3D contact geometry (df/contact3d_geometry.hpp). Expected distances are the
+// 3D contact geometry (df/3d/contact3d_geometry.hpp). Expected distances are the
 // gaps the blocks are placed at; the linearisation is checked against the
 // distance recomputed from the moved vertices (move_point), whose error must
 // fall as h^2.
@@ -8,7 +8,7 @@
 #include <numbers>
 #include <vector>
 
-#include "dda/df/contact3d_geometry.hpp"
+#include "dda/df/3d/contact3d_geometry.hpp"
 
 namespace dda::df3 {
 namespace {

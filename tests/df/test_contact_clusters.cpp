@@ -1,4 +1,4 @@
-// Contact clusters (df/src/contact_clusters.hpp): the state changes of an
+// Contact clusters (df/src/core/contact_clusters.hpp): the state changes of an
 // open-close iterate settled on the blocks around them, with a global solve
 // to check. The solves per step are deterministic counts, so they are
 // tested as counts; the physics of every accepted step is tested contact by
@@ -10,7 +10,7 @@
 #include <cstdio>
 
 #include "df_test_models.hpp"
-#include "dda/df/simulation.hpp"
+#include "dda/df/2d/simulation.hpp"
 
 namespace dda::df {
 namespace {

@@ -1,4 +1,4 @@
-// Contact clusters in 3D (df/src/simulation3d_clusters.cpp, the driver
+// Contact clusters in 3D (df/src/3d/simulation3d_clusters.cpp, the driver
 // shared with 2D in contact_clusters.hpp): the tests of the 2D clusters
 // (test_contact_clusters.cpp) on a wall of 3D bricks. Solve counts are
 // deterministic, so they are tested as counts; the physics of every
@@ -10,8 +10,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "df3_test_models.hpp"
-#include "dda/df/simulation3d.hpp"
+#include "df_test_models3d.hpp"
+#include "dda/df/3d/simulation3d.hpp"
 
 namespace dda::df3 {
 namespace {

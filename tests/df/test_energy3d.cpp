@@ -1,4 +1,4 @@
-// The 3D energy ledger (simulation3d_energy.cpp, df/energy.hpp): the same
+// The 3D energy ledger (simulation3d_energy.cpp, df/core/energy.hpp): the same
 // checks as the 2D ledger's (test_energy_runaway.cpp), on a 1 m cube
 // (rho = 2600, m = 2600 kg) in free fall, sliding on a 20 deg plane, and
 // carried by a shaking ground in both earthquake modes.
@@ -9,8 +9,8 @@
 #include <memory>
 #include <numbers>
 
-#include "dda/df/simulation3d.hpp"
-#include "df3_test_models.hpp"
+#include "dda/df/3d/simulation3d.hpp"
+#include "df_test_models3d.hpp"
 
 namespace dda::df3 {
 namespace {
@@ -109,7 +109,7 @@ TEST(Energy3, GroundShakingIsCountedInBothModes) {
       t.push_back(k * 1e-3);
       a.push_back(Vec3(a0 * std::sin(w * k * 1e-3), 0, 0));
     }
-    m.earthquake = {std::make_shared<GroundMotion3>(t, a), make_ground_input_mode3(mode)};
+    m.earthquake = {std::make_shared<GroundMotion3>(t, a), make_ground_motion_mode3(mode)};
     Simulation3 sim(m);
     sim.start();
     for (int s = 0; s < 1000; ++s) sim.step(1e-3);

@@ -1,5 +1,5 @@
 // The energy ledger's bookkeeping shared by both dimensions
-// (df/src/energy_ledger.hpp), on a kernel of its own: point masses falling
+// (df/src/core/energy_ledger.hpp), on a kernel of its own: point masses falling
 // in one dimension, plus scripted terms for the other columns. The 2D and
 // 3D kernels are checked against physics in test_energy3d.cpp,
 // test_waves*.cpp, test_viscous_damping.cpp and the other ledger tests;
@@ -11,7 +11,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "energy_ledger.hpp"
+#include "core/energy_ledger.hpp"
 #include "forced_threads.hpp"
 
 namespace dda::df {

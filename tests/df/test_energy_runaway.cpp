@@ -8,9 +8,9 @@
 
 #include "df_test_models.hpp"
 #include "dda/common/error.hpp"
-#include "dda/df/block_system.hpp"
-#include "dda/df/runaway.hpp"
-#include "dda/df/simulation.hpp"
+#include "dda/df/core/block_system.hpp"
+#include "dda/df/core/runaway.hpp"
+#include "dda/df/2d/simulation.hpp"
 
 namespace dda::df {
 namespace {

@@ -1,4 +1,4 @@
-// Free-field side boundaries in 3D (viscous_boundary3.hpp, free_field.hpp):
+// Free-field side boundaries in 3D (viscous_boundary3d.hpp, free_field.hpp):
 // the traction on a side face by hand, a layer wider than tall that moves
 // as the 1D plane wave does with them (and is dragged without them), the
 // same section in 2D (viscous_boundary.hpp), and the energy ledger.
@@ -26,12 +26,12 @@
 #include <string>
 #include <vector>
 
-#include "dda/df/free_field.hpp"
-#include "dda/df/simulation.hpp"
-#include "dda/df/simulation3d.hpp"
-#include "dda/df/viscous_boundary.hpp"
+#include "dda/df/core/free_field.hpp"
+#include "dda/df/2d/simulation.hpp"
+#include "dda/df/3d/simulation3d.hpp"
+#include "dda/df/2d/viscous_boundary.hpp"
 #include "wave_test_models.hpp"
-#include "wave_test_models3.hpp"
+#include "wave_test_models3d.hpp"
 #include "../common/input_error_of.hpp"
 
 namespace dda::df3 {
@@ -45,9 +45,9 @@ Material3 layer_rock() { return testing::rock(2000, 1e9, 0.25); }
 
 // The incident wave along `dir` (x, y: S; z: P), the 2D test's pulse
 // (wave_test_models.hpp) with its samples.
-History3 pulse3(const Vec3& dir) {
+TimeHistory3 pulse3(const Vec3& dir) {
   const df::TimeHistory h = df::test::hann_pulse(kAmplitude, kTau, dda::Vec2(1, 0));
-  History3 out;
+  TimeHistory3 out;
   for (std::size_t k = 0; k < h.t.size(); ++k) {
     out.t.push_back(h.t[k]);
     out.value.push_back(h.value[k].x() * dir);
@@ -81,7 +81,7 @@ Model3 layer3(const Vec3& dir, bool free_field) {
         {"top", id(j, kPlates - 1), Vec3((j + 0.5) * kWidth, 0.5 * kWidth, (kPlates - 0.5) * kHeight)});
   m.gravity = Vec3::Zero();
   // Glue: 1000 times a plate's E A / h over its four corners (as the 3D
-  // wave columns, wave_test_models3.hpp), bonds of 100 MPa.
+  // wave columns, wave_test_models3d.hpp), bonds of 100 MPa.
   m.normal_penalty = m.shear_penalty = 1000 * 1e9 * kWidth * kWidth / kHeight / 4;
   m.default_joint.friction_deg = 45;
   m.default_joint.cohesion = m.default_joint.tensile_strength = 1e8;

@@ -7,9 +7,9 @@
 #include <string>
 
 #include "dda/common/error.hpp"
-#include "dda/df/friction_laws.hpp"
-#include "dda/df/results.hpp"
-#include "dda/df/scenario.hpp"
+#include "dda/df/core/friction_laws.hpp"
+#include "dda/df/io/results.hpp"
+#include "dda/df/io/scenario.hpp"
 #include "df_test_models.hpp"
 
 namespace dda::df {

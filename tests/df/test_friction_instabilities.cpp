@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "dda/df/friction_laws.hpp"
-#include "dda/df/simulation.hpp"
+#include "dda/df/core/friction_laws.hpp"
+#include "dda/df/2d/simulation.hpp"
 #include "spring_slider_model.hpp"
 #include "spring_slider_ode.hpp"
 

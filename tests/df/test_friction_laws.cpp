@@ -9,7 +9,7 @@
 #include <string>
 
 #include "dda/common/error.hpp"
-#include "dda/df/friction_laws.hpp"
+#include "dda/df/core/friction_laws.hpp"
 #include "df_test_models.hpp"
 
 namespace dda::df {

@@ -1,4 +1,4 @@
-// Every registered friction law (friction_laws(), df/src/friction_registry.cpp),
+// Every registered friction law (friction_laws(), df/src/core/friction_registry.cpp),
 // in both dimensions (Simulation and Simulation3):
 //   - no frictional strength in tension: the law gives 0 for a pulled
 //     contact, and a block pulled off its base moves as a free body;
@@ -18,10 +18,10 @@
 #include <string>
 #include <vector>
 
-#include "dda/df/friction.hpp"
-#include "dda/df/results.hpp"
-#include "dda/df/results3d.hpp"
-#include "df3_io_test_models.hpp"
+#include "dda/df/core/friction.hpp"
+#include "dda/df/io/results.hpp"
+#include "dda/df/io/results3d.hpp"
+#include "df_io_test_models3d.hpp"
 #include "df_io_test_models.hpp"
 #include "df_test_models.hpp"
 

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "df_test_models.hpp"
-#include "dda/df/simulation.hpp"
+#include "dda/df/2d/simulation.hpp"
 
 namespace dda::df {
 namespace {

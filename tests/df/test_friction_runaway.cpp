@@ -1,9 +1,9 @@
 // The start-up relaxation's test for a friction fixed point that runs away
-// (FrictionRunaway, df/src/start_up_relax.hpp), on hand-made sequences of
+// (FrictionRunaway, df/src/core/start_up_relax.hpp), on hand-made sequences of
 // the largest change of a sliding contact's friction between iterates.
 #include <gtest/gtest.h>
 
-#include "start_up_relax.hpp"
+#include "core/start_up_relax.hpp"
 
 namespace dda::df {
 namespace {

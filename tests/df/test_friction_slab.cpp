@@ -13,7 +13,7 @@
 #include <cstdio>
 #include <vector>
 
-#include "dda/df/simulation.hpp"
+#include "dda/df/2d/simulation.hpp"
 #include "slab_model.hpp"
 #include "spring_slider_ode.hpp"
 

@@ -1,11 +1,11 @@
-// DDA for Windows analysis files (df/import_ana.hpp).
+// DDA for Windows analysis files (df/io/import_ana.hpp).
 #include <gtest/gtest.h>
 
 #include <fstream>
 #include <sstream>
 
 #include "dda/common/error.hpp"
-#include "dda/df/import_ana.hpp"
+#include "dda/df/io/import_ana.hpp"
 #include "df_test_models.hpp"
 
 namespace dda::df {

@@ -7,7 +7,7 @@
 #include <filesystem>
 
 #include "dda/common/error.hpp"
-#include "dda/df/results.hpp"
+#include "dda/df/io/results.hpp"
 #include "df_io_test_models.hpp"
 #include "df_test_models.hpp"
 

@@ -7,7 +7,7 @@
 #include <fstream>
 
 #include "dda/common/error.hpp"
-#include "dda/df/simulation.hpp"
+#include "dda/df/2d/simulation.hpp"
 #include "earthquake_test_models.hpp"
 
 namespace dda::df {

@@ -1,4 +1,4 @@
-// The results file and the ParaView frames (df/results.hpp).
+// The results file and the ParaView frames (df/io/results.hpp).
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -7,7 +7,7 @@
 
 #include "dda/common/error.hpp"
 #include "dda/common/model_io.hpp"
-#include "dda/df/results.hpp"
+#include "dda/df/io/results.hpp"
 #include "df_io_test_models.hpp"
 #include "df_test_models.hpp"
 

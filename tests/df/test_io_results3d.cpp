@@ -1,4 +1,4 @@
-// The 3D results file (df/results3d.hpp): what is written reads back, and a
+// The 3D results file (df/io/results3d.hpp): what is written reads back, and a
 // run stopped after N steps, written, read and resumed in a fresh
 // Simulation3 ends bit for bit where the uninterrupted run ends.
 #include <gtest/gtest.h>
@@ -6,8 +6,8 @@
 #include <filesystem>
 
 #include "dda/common/error.hpp"
-#include "dda/df/results3d.hpp"
-#include "df3_io_test_models.hpp"
+#include "dda/df/io/results3d.hpp"
+#include "df_io_test_models3d.hpp"
 
 namespace dda::df3 {
 namespace {
@@ -90,7 +90,7 @@ TEST(Results3d, WritesAndReadsBack) {
   EXPECT_EQ(back.frames.back().vertices.size(), 16u);
   // The checkpoint holds the contacts as they are.
   ASSERT_TRUE(back.checkpoint.has_value());
-  const Simulation3State s = sim.state();
+  const SimulationState3 s = sim.state();
   ASSERT_EQ(back.checkpoint->contacts.size(), s.contacts.size());
   EXPECT_FALSE(s.contacts.empty());
   for (std::size_t k = 0; k < s.contacts.size(); ++k) {

@@ -1,8 +1,8 @@
-// The DF sections of a scenario into a ModelInput (df/scenario.hpp).
+// The DF sections of a scenario into a ModelInput (df/io/scenario.hpp).
 #include <gtest/gtest.h>
 
 #include "dda/common/error.hpp"
-#include "dda/df/scenario.hpp"
+#include "dda/df/io/scenario.hpp"
 #include "df_test_models.hpp"
 
 namespace dda::df {

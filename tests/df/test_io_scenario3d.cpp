@@ -1,12 +1,12 @@
-// The forward-run sections of a 3D scenario (df/scenario3d.hpp): what they
+// The forward-run sections of a 3D scenario (df/io/scenario3d.hpp): what they
 // build, and one sentence naming the file, line and key for each mistake.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "dda/common/error.hpp"
-#include "dda/df/scenario3d.hpp"
-#include "df3_io_test_models.hpp"
+#include "dda/df/io/scenario3d.hpp"
+#include "df_io_test_models3d.hpp"
 
 namespace dda::df3 {
 namespace {

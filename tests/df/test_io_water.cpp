@@ -1,14 +1,14 @@
 // The scenario's `water` section and `joints.*.saturation`, 2D and 3D
-// (df/src/scenario_water.cpp): read into the models, and every mistake
+// (df/src/io/scenario_water.cpp): read into the models, and every mistake
 // refused with one sentence naming the file, the line and the key.
 #include <gtest/gtest.h>
 
 #include <string>
 
 #include "../common/input_error_of.hpp"
-#include "dda/df/scenario.hpp"
-#include "dda/df/scenario3d.hpp"
-#include "df3_io_test_models.hpp"
+#include "dda/df/io/scenario.hpp"
+#include "dda/df/io/scenario3d.hpp"
+#include "df_io_test_models3d.hpp"
 #include "df_test_models.hpp"
 
 namespace dda::df {

@@ -9,9 +9,9 @@
 #include <cstdio>
 #include <string>
 
-#include "dda/df/scenario.hpp"
-#include "dda/df/scenario3d.hpp"
-#include "df3_io_test_models.hpp"
+#include "dda/df/io/scenario.hpp"
+#include "dda/df/io/scenario3d.hpp"
+#include "df_io_test_models3d.hpp"
 #include "df_test_models.hpp"
 
 namespace dda::df {

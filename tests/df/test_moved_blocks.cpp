@@ -11,9 +11,9 @@
 #include <random>
 
 #include "df_test_models.hpp"
-#include "dda/df/block_kinematics.hpp"
-#include "dda/df/moved_blocks.hpp"
-#include "dda/df/simulation.hpp"
+#include "dda/df/2d/block_kinematics.hpp"
+#include "dda/df/2d/moved_blocks.hpp"
+#include "dda/df/2d/simulation.hpp"
 
 namespace dda::df {
 namespace {

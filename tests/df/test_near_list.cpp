@@ -10,9 +10,9 @@
 #include <tuple>
 
 #include "df_test_models.hpp"
-#include "dda/df/broad_phase.hpp"
-#include "dda/df/contact_detection.hpp"
-#include "dda/df/near_list.hpp"
+#include "dda/df/core/broad_phase.hpp"
+#include "dda/df/2d/contact_detection.hpp"
+#include "dda/df/2d/near_list.hpp"
 
 namespace dda::df {
 namespace {

@@ -9,9 +9,9 @@
 #include <string>
 
 #include "dda/common/error.hpp"
-#include "dda/df/normal_law.hpp"
-#include "dda/df/scenario.hpp"
-#include "dda/df/simulation.hpp"
+#include "dda/df/core/normal_law.hpp"
+#include "dda/df/io/scenario.hpp"
+#include "dda/df/2d/simulation.hpp"
 #include "df_test_models.hpp"
 
 namespace dda::df {

@@ -18,12 +18,12 @@
 #include <vector>
 
 #include "../common/input_error_of.hpp"
-#include "dda/df/results3d.hpp"
-#include "dda/df/scenario3d.hpp"
-#include "dda/df/simulation.hpp"
-#include "dda/df/simulation3d.hpp"
-#include "df3_io_test_models.hpp"
-#include "df3_test_models.hpp"
+#include "dda/df/io/results3d.hpp"
+#include "dda/df/io/scenario3d.hpp"
+#include "dda/df/2d/simulation.hpp"
+#include "dda/df/3d/simulation3d.hpp"
+#include "df_io_test_models3d.hpp"
+#include "df_test_models3d.hpp"
 #include "df_test_models.hpp"
 
 namespace dda::df3 {

@@ -9,8 +9,8 @@
 
 #include "df_test_models.hpp"
 #include "forced_threads.hpp"
-#include "dda/df/broad_phase.hpp"
-#include "dda/df/simulation.hpp"
+#include "dda/df/core/broad_phase.hpp"
+#include "dda/df/2d/simulation.hpp"
 
 namespace dda::df {
 namespace {

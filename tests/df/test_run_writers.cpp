@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "dda/df/results.hpp"
+#include "dda/df/io/results.hpp"
 #include "df_io_test_models.hpp"
 #include "df_test_models.hpp"
 

@@ -10,9 +10,9 @@
 #include <string>
 
 #include "dda/common/error.hpp"
-#include "dda/df/scenario3d.hpp"
-#include "dda/df/simulation3d.hpp"
-#include "df3_io_test_models.hpp"
+#include "dda/df/io/scenario3d.hpp"
+#include "dda/df/3d/simulation3d.hpp"
+#include "df_io_test_models3d.hpp"
 #include "../common/input_error_of.hpp"
 
 namespace dda::df3 {
@@ -137,7 +137,7 @@ TEST(Scenario3dWaves, SidesSelectEveryFaceOnThem) {
   EXPECT_TRUE(s.model.viscous->incident_velocity.t.empty());
 }
 
-// Free-field sides (viscous_boundary3.hpp): every face on them is a
+// Free-field sides (viscous_boundary3d.hpp): every face on them is a
 // free-field face, the base is the input; the free field's base is the
 // bottom of the blocks (z = 0) and its free surface the top of the
 // free-field faces (the 4 plates of 2.5 m: z = 10).

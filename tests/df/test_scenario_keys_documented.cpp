@@ -1,12 +1,12 @@
 // Every scenario key the forward run reads is documented in docs/scenario.md:
 //   - the parameters each registered friction law declares (its spec) and
 //     the numbers of each normal law, in the row of that law's table;
-//   - every key the 2D and 3D DF readers allow (df/src/scenario*.cpp), as
+//   - every key the 2D and 3D DF readers allow (df/src/io/scenario*.cpp), as
 //     they declare them to the strict YAML reader (YamlNode::allow, heard
 //     through observe_allowed_keys while the scenarios below are read), and
 //     the top-level sections (scenario_sections()).
 // So that no reader escapes the check, every allow() call in
-// df/src/scenario* must have been heard: a new reader section needs a
+// df/src/io/scenario* must have been heard: a new reader section needs a
 // scenario below that reaches it.
 #include <gtest/gtest.h>
 
@@ -23,11 +23,11 @@
 #include "dda/common/error.hpp"
 #include "dda/common/scenario.hpp"
 #include "dda/common/yaml_reader.hpp"
-#include "dda/df/friction.hpp"
-#include "dda/df/normal_law.hpp"
-#include "dda/df/scenario.hpp"
-#include "dda/df/scenario3d.hpp"
-#include "df3_io_test_models.hpp"
+#include "dda/df/core/friction.hpp"
+#include "dda/df/core/normal_law.hpp"
+#include "dda/df/io/scenario.hpp"
+#include "dda/df/io/scenario3d.hpp"
+#include "df_io_test_models3d.hpp"
 #include "df_test_models.hpp"
 
 namespace dda::df {
@@ -258,11 +258,11 @@ std::map<std::string, Heard> heard_from_the_readers() {
   return heard;
 }
 
-// The allow() calls of the DF readers' sources, "df/src/NAME:LINE".
+// The allow() calls of the DF readers' sources, "df/src/io/NAME:LINE".
 std::set<std::string> allow_calls_in_the_readers() {
   std::set<std::string> calls;
   const std::regex call(R"((\.|->)allow\()");
-  for (const auto& e : fs::directory_iterator(kSource / "df" / "src")) {
+  for (const auto& e : fs::directory_iterator(kSource / "df" / "src" / "io")) {
     const std::string name = e.path().filename().string();
     if (name.rfind("scenario", 0) != 0) continue;
     std::ifstream in(e.path());
@@ -271,7 +271,7 @@ std::set<std::string> allow_calls_in_the_readers() {
       ++n;
       const std::size_t code = line.find_first_not_of(' ');
       if (code != std::string::npos && line.compare(code, 2, "//") == 0) continue;
-      if (std::regex_search(line, call)) calls.insert("df/src/" + name + ":" + std::to_string(n));
+      if (std::regex_search(line, call)) calls.insert("df/src/io/" + name + ":" + std::to_string(n));
     }
   }
   return calls;

@@ -1,4 +1,4 @@
-// The 3D DDA step (df/simulation3d.hpp) on V1 in 3D: a 1 m cube on a fixed
+// The 3D DDA step (df/3d/simulation3d.hpp) on V1 in 3D: a 1 m cube on a fixed
 // plane dipping alpha = 20 deg towards dip direction 90 (east).
 //
 // Geometry: the base [-5, 5]^2 x [-1, 0] and the cube [-0.5, 0.5]^2 x [0, 1]
@@ -29,8 +29,8 @@
 #include <numbers>
 
 #include "dda/common/error.hpp"
-#include "dda/df/simulation3d.hpp"
-#include "df3_test_models.hpp"
+#include "dda/df/3d/simulation3d.hpp"
+#include "df_test_models3d.hpp"
 
 namespace dda::df3 {
 namespace {
@@ -74,7 +74,7 @@ SlideResult slide(double alpha_deg, const df::JointProperties& joint, double dt,
   SlideResult out;
   const int steps = static_cast<int>(std::lround(t_end / dt));
   for (int s = 0; s < steps; ++s) {
-    const StepInfo3 info = sim.step(dt);
+    const StepRecord3 info = sim.step(dt);
     if (!info.converged) ++out.unconverged;
     out.max_iterations = std::max(out.max_iterations, info.iterations);
     for (const auto& v : sim.blocks()[1].vertices) out.penetration = std::max(out.penetration, -normal.dot(v));
@@ -230,7 +230,7 @@ TEST(Simulation3, ResumedRunDoesNotRelaxAgain) {
   Simulation3 a(m);
   for (int s = 0; s < 20; ++s) a.step(1e-3);
   ASSERT_GT(a.settle_iterations(), 0);
-  const Simulation3State saved = a.state();
+  const SimulationState3 saved = a.state();
   EXPECT_TRUE(saved.started);
   for (int s = 0; s < 20; ++s) a.step(1e-3);
 

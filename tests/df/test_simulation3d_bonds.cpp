@@ -1,4 +1,4 @@
-// Bonds of the 3D joints (df/src/bonds3d.hpp, docs/solver3d.md "Bonds"):
+// Bonds of the 3D joints (df/src/3d/bonds3d.hpp, docs/solver3d.md "Bonds"):
 // cohesion c and tensile strength T act over each contact's share of the
 // face-to-face patch, hold the hand limits W sin a < c A + W cos a tan phi
 // and W < T A, break for good past them, book their energy as breakage, and
@@ -10,10 +10,10 @@
 #include <filesystem>
 #include <numbers>
 
-#include "bonds3d.hpp"
-#include "dda/df/results3d.hpp"
-#include "df3_io_test_models.hpp"
-#include "df3_test_models.hpp"
+#include "3d/bonds3d.hpp"
+#include "dda/df/io/results3d.hpp"
+#include "df_io_test_models3d.hpp"
+#include "df_test_models3d.hpp"
 
 namespace dda::df3 {
 namespace {
@@ -194,7 +194,7 @@ TEST(Bonds3, TensileStrengthHoldsHangingCubeUpToItsWeight) {
 Model3 pulled_cube() {
   const double w = kRho * kG;
   Model3 m = hanging_cube(1.05 * w, true);
-  m.loads = {{1, Vec3(0, 0, -0.5), History3{{0.0, 1.0}, {Vec3::Zero(), Vec3(0, 0, -0.4 * w)}}}};
+  m.loads = {{1, Vec3(0, 0, -0.5), TimeHistory3{{0.0, 1.0}, {Vec3::Zero(), Vec3(0, 0, -0.4 * w)}}}};
   m.control.dt = 1e-3;
   m.control.steps = 160;
   return m;

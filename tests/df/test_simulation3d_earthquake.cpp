@@ -1,4 +1,4 @@
-// 3D earthquake input (df/ground_motion3.hpp) on validation case V3
+// 3D earthquake input (df/3d/ground_motion3d.hpp) on validation case V3
 // (docs/validation.md): a 1 m cube on a plane 20/090 with phi = 30,
 // under the resultant acceleration r(t) = g [0.5 sin 10t, 0, -1] for
 // t in [0, 2 pi] (ten cycles), and the same with a second horizontal
@@ -20,8 +20,8 @@
 #include <numbers>
 
 #include "dda/analysis/sliding3d.hpp"
-#include "dda/df/simulation3d.hpp"
-#include "df3_test_models.hpp"
+#include "dda/df/3d/simulation3d.hpp"
+#include "df_test_models3d.hpp"
 
 namespace dda::df3 {
 namespace {
@@ -82,7 +82,7 @@ Trajectory dda(Vec3 (*body)(double), double t_end, const std::string& mode, doub
   m.normal_penalty = m.shear_penalty = penalty;
   m.gravity = {0, 0, -kG};
   m.control.initial_equilibrium = false;  // gravity switched on at t = 0: what the expected numbers assume
-  m.earthquake = {ground(body, t_end), make_ground_input_mode3(mode)};
+  m.earthquake = {ground(body, t_end), make_ground_motion_mode3(mode)};
   Simulation3 sim(m);
   const Vec3 c0 = sim.blocks()[1].centroid, b0 = sim.blocks()[0].centroid;
   const double dt = 1e-3;
@@ -129,7 +129,7 @@ TEST(GroundMotion3, IntegratesAPiecewiseLinearRecordExactly) {
   // The mean over a step is the exact impulse per unit time.
   EXPECT_LT((g.mean_acceleration(0.2, 0.6) - slope * 0.4).norm(), 1e-12);
   EXPECT_THROW(GroundMotion3({0, 0}, {Vec3::Zero(), Vec3::Zero()}), InputError);
-  EXPECT_THROW(make_ground_input_mode3("velocity"), InputError);
+  EXPECT_THROW(make_ground_motion_mode3("velocity"), InputError);
 }
 
 TEST(Simulation3Earthquake, OneHorizontalComponentLoadingModeV3) {

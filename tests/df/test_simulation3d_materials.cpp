@@ -30,10 +30,10 @@
 
 #include "../common/input_error_of.hpp"
 #include "dda/common/error.hpp"
-#include "dda/df/results3d.hpp"
-#include "dda/df/simulation3d.hpp"
-#include "df3_io_test_models.hpp"
-#include "df3_test_models.hpp"
+#include "dda/df/io/results3d.hpp"
+#include "dda/df/3d/simulation3d.hpp"
+#include "df_io_test_models3d.hpp"
+#include "df_test_models3d.hpp"
 
 namespace dda::df3 {
 namespace {

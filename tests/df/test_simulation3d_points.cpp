@@ -1,4 +1,4 @@
-// Points of the 3D solver (df/points3d.hpp): measurement points, point
+// Points of the 3D solver (df/3d/points3d.hpp): measurement points, point
 // loads, fixed and moving points, on one free 1 m cube (rho = 2600, so
 // m = 2600 kg) without contacts. Expected numbers are Newton's laws for a
 // rigid body, which the implicit constant-acceleration step integrates
@@ -8,8 +8,8 @@
 #include <cmath>
 
 #include "dda/common/error.hpp"
-#include "dda/df/simulation3d.hpp"
-#include "df3_test_models.hpp"
+#include "dda/df/3d/simulation3d.hpp"
+#include "df_test_models3d.hpp"
 
 namespace dda::df3 {
 namespace {
@@ -23,7 +23,7 @@ Model3 one_cube(const Vec3& gravity) {
   return m;
 }
 
-History3 constant(const Vec3& v) { return History3{{0.0}, {v}}; }
+TimeHistory3 constant(const Vec3& v) { return TimeHistory3{{0.0}, {v}}; }
 
 // Free fall: the measurement point at a corner moves -g t^2 / 2 with speed
 // -g t, exactly (no rotation), and its block carries no stress.
@@ -54,7 +54,7 @@ TEST(Simulation3Points, KineticEnergyIsHalfMV2PlusHalfIW2) {
   EXPECT_NEAR(sim.kinetic_energy(), 0.5 * 2600 * 9.81 * 9.81, 1e-9 * 2600 * 9.81 * 9.81);
 
   Simulation3 spin(one_cube({0, 0, 0}));
-  Simulation3State state = spin.state();
+  SimulationState3 state = spin.state();
   state.velocity[0] << 1, -2, 0.5, 0, 0, 2, 0, 0, 0, 0, 0, 0;
   spin.restore(state);
   const double translation = 0.5 * 2600 * (1 + 4 + 0.25), rotation = 0.5 * (2600 * 2.0 / 12) * 4;
@@ -67,7 +67,7 @@ TEST(Simulation3Points, PointLoadsAccelerateTheBlock) {
   const Vec3 f(2600, -5200, 1300);  // N: accelerations 1, -2, 0.5 m/s^2
   for (const bool ramp : {false, true}) {
     Model3 m = one_cube({0, 0, 0});
-    m.loads = {{0, Vec3(0.5, 0.5, 0.5), ramp ? History3{{0.0, 1.0}, {Vec3::Zero(), f}} : constant(f)}};
+    m.loads = {{0, Vec3(0.5, 0.5, 0.5), ramp ? TimeHistory3{{0.0, 1.0}, {Vec3::Zero(), f}} : constant(f)}};
     m.measurements = {{"centre", 0, Vec3(0.5, 0.5, 0.5)}};
     Simulation3 sim(m);
     for (int s = 0; s < 50; ++s) sim.step(0.02);
@@ -104,7 +104,7 @@ TEST(Simulation3Points, FixedPointHoldsTheBlock) {
 // 0.1 m/s east the centre is 0.1 m east, within the spring's lag.
 TEST(Simulation3Points, MovingPointCarriesTheBlock) {
   Model3 m = one_cube({0, 0, 0});
-  History3 path{{0.0, 1.0, 2.0}, {Vec3::Zero(), Vec3(0.1, 0, 0), Vec3(0.1, 0, 0)}};
+  TimeHistory3 path{{0.0, 1.0, 2.0}, {Vec3::Zero(), Vec3(0.1, 0, 0), Vec3(0.1, 0, 0)}};
   m.fixed_points = {{0, Vec3(0.5, 0.5, 0.5), path, 0.0}};
   m.measurements = {{"centre", 0, Vec3(0.5, 0.5, 0.5)}};
   Simulation3 sim(m);
@@ -121,12 +121,12 @@ TEST(Simulation3Points, BadPointsAreRefused) {
   m.fixed_points = {{0, Vec3::Zero(), std::nullopt, 0.0}};
   EXPECT_THROW(Simulation3{m}, InputError);
   m = one_cube({0, 0, 0});
-  m.loads = {{0, Vec3::Zero(), History3{{1.0, 1.0}, {Vec3::Zero(), Vec3::Zero()}}}};
+  m.loads = {{0, Vec3::Zero(), TimeHistory3{{1.0, 1.0}, {Vec3::Zero(), Vec3::Zero()}}}};
   EXPECT_THROW(Simulation3{m}, InputError);
 }
 
-TEST(History3, InterpolatesAndAveragesExactly) {
-  const History3 h{{0.0, 1.0, 3.0}, {Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(2, 4, 0)}};
+TEST(TimeHistory3, InterpolatesAndAveragesExactly) {
+  const TimeHistory3 h{{0.0, 1.0, 3.0}, {Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(2, 4, 0)}};
   EXPECT_LT((h.at(-1) - Vec3(0, 0, 0)).norm(), 1e-15);
   EXPECT_LT((h.at(0.5) - Vec3(1, 0, 0)).norm(), 1e-15);
   EXPECT_LT((h.at(2) - Vec3(2, 2, 0)).norm(), 1e-15);
@@ -157,7 +157,7 @@ TEST(Simulation3Control, StepsAreCutToTheDisplacementLimit) {
   EXPECT_NEAR(sim.time(), 1.0, 1e-12);
   EXPECT_LT((sim.histories()[0].back().displacement - Vec3(0, 0, -9.81 / 2)).norm(), 1e-9);
   int cuts = 0;
-  for (const StepInfo3& s : sim.log()) {
+  for (const StepRecord3& s : sim.log()) {
     EXPECT_LE(s.max_displacement, 0.005 * (1 + 1e-9));
     cuts += s.dt_cuts;
   }

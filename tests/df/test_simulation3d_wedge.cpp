@@ -1,4 +1,4 @@
-// The 3D DDA step (df/simulation3d.hpp) on validation case V4
+// The 3D DDA step (df/3d/simulation3d.hpp) on validation case V4
 // (docs/validation.md): the tetrahedral wedge on planes
 // A 51.4/065.8 and B 51.4/295.2.
 //
@@ -45,7 +45,7 @@
 #include "dda/common/error.hpp"
 #include "dda/analysis/sliding3d.hpp"
 #include "dda/dc/cut3d.hpp"
-#include "dda/df/simulation3d.hpp"
+#include "dda/df/3d/simulation3d.hpp"
 #include "dda/dl/dfn3d.hpp"
 
 namespace dda::df3 {
@@ -151,7 +151,7 @@ WedgeResult run(const WedgeModel& w, double dt, double t_end) {
   const int steps = static_cast<int>(std::lround(t_end / dt));
   int averaged = 0;
   for (int s = 0; s < steps; ++s) {
-    const StepInfo3 info = sim.step(dt);
+    const StepRecord3 info = sim.step(dt);
     if (!info.converged) ++out.unconverged;
     out.max_iterations = std::max(out.max_iterations, info.iterations);
     double na = 0, nb = 0, other = 0;
@@ -358,7 +358,7 @@ TEST(Simulation3Wedge, ShakingTableMatchesTheAnalyticalSolutionV4) {
   auto slide = [&](const char* mode, double shear_ratio) {
     WedgeModel w = build(30, 1e11, Layout::SharedCorners);
     w.model.shear_penalty = shear_ratio * w.model.normal_penalty;
-    w.model.earthquake = {motion, make_ground_input_mode3(mode)};
+    w.model.earthquake = {motion, make_ground_motion_mode3(mode)};
     Simulation3 sim(w.model);
     const auto k = static_cast<std::size_t>(w.wedge);
     std::size_t base = k == 0 ? 1 : 0;

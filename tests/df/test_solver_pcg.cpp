@@ -12,9 +12,9 @@
 #include "forced_threads.hpp"
 #include "random_block_system.hpp"
 #include "dda/common/error.hpp"
-#include "dda/df/block_system.hpp"
-#include "dda/df/linear_solver.hpp"
-#include "dda/df/simulation.hpp"
+#include "dda/df/core/block_system.hpp"
+#include "dda/df/core/linear_solver.hpp"
+#include "dda/df/2d/simulation.hpp"
 
 namespace dda::df {
 namespace {

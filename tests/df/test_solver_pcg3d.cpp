@@ -14,11 +14,11 @@
 #include <random>
 #include <vector>
 
-#include "df3_test_models.hpp"
+#include "df_test_models3d.hpp"
 #include "forced_threads.hpp"
-#include "dda/df/block_system.hpp"
-#include "dda/df/linear_solver.hpp"
-#include "dda/df/simulation3d.hpp"
+#include "dda/df/core/block_system.hpp"
+#include "dda/df/core/linear_solver.hpp"
+#include "dda/df/3d/simulation3d.hpp"
 
 namespace dda::df3 {
 namespace {
@@ -281,7 +281,7 @@ TEST(SolverPcg3d, ResumedRunIsBitForBitTheSame) {
   Simulation3 whole(m), first(m);
   for (int s = 0; s < 30; ++s) whole.step(2e-3);
   for (int s = 0; s < 15; ++s) first.step(2e-3);
-  const Simulation3State saved = first.state();
+  const SimulationState3 saved = first.state();
   EXPECT_GT(saved.solver_warm_start.x.size(), 0);
   Simulation3 resumed(m);
   resumed.restore(saved);

@@ -8,12 +8,12 @@
 #include <random>
 #include <vector>
 
-#include "block_pcg.hpp"
+#include "core/block_pcg.hpp"
 #include "df_test_models.hpp"
 #include "random_block_system.hpp"
-#include "dda/df/block_system.hpp"
-#include "dda/df/linear_solver.hpp"
-#include "dda/df/simulation.hpp"
+#include "dda/df/core/block_system.hpp"
+#include "dda/df/core/linear_solver.hpp"
+#include "dda/df/2d/simulation.hpp"
 
 namespace dda::df {
 namespace {

@@ -10,7 +10,7 @@
 #include <Eigen/Cholesky>
 #include <Eigen/QR>
 
-#include "spd_inverse.hpp"
+#include "core/spd_inverse.hpp"
 
 namespace dda::df {
 namespace {

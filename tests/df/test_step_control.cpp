@@ -1,4 +1,4 @@
-// The step-length rule of both solvers (df/src/step_control.hpp): cut by 3
+// The step-length rule of both solvers (df/src/core/step_control.hpp): cut by 3
 // when the contacts do not settle, to 0.9 of what the displacement limit
 // allows (at least by half) when a vertex moves too far, never below the
 // shortest step, and 10 % regrowth after easy steps. Every expected number
@@ -8,7 +8,7 @@
 #include <cmath>
 #include <optional>
 
-#include "step_control.hpp"
+#include "core/step_control.hpp"
 
 namespace dda::df {
 namespace {

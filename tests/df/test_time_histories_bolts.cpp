@@ -8,7 +8,7 @@
 
 #include "df_test_models.hpp"
 #include "dda/common/error.hpp"
-#include "dda/df/simulation.hpp"
+#include "dda/df/2d/simulation.hpp"
 
 namespace dda::df {
 namespace {

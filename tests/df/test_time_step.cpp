@@ -9,8 +9,8 @@
 
 #include "df_test_models.hpp"
 #include "dda/common/error.hpp"
-#include "dda/df/model.hpp"
-#include "dda/df/time_step.hpp"
+#include "dda/df/2d/model.hpp"
+#include "dda/df/core/time_step.hpp"
 
 namespace dda::df {
 namespace {

@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "df_test_models.hpp"
-#include "dda/df/simulation.hpp"
+#include "dda/df/2d/simulation.hpp"
 
 namespace dda::df {
 namespace {

@@ -8,14 +8,14 @@
 // Released with no contact force instead, a 1 GPa block slides nearly freely
 // while its normal force builds up and keeps a 2.6 mm/s speed excess (2.7 %
 // of s(1 s) at phi = 29, measured at dt = 1 ms; 12 % at dt = 0.2 ms, where
-// its undamped bounce also makes it creep; see df/src/settle.cpp).
+// its undamped bounce also makes it creep; see df/src/2d/settle.cpp).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
 
 #include "df_test_models.hpp"
-#include "dda/df/simulation.hpp"
+#include "dda/df/2d/simulation.hpp"
 
 namespace dda::df {
 namespace {

@@ -19,7 +19,7 @@
 
 #include "dda/analysis/newmark.hpp"
 #include "dda/common/record.hpp"
-#include "dda/df/simulation.hpp"
+#include "dda/df/2d/simulation.hpp"
 #include "earthquake_test_models.hpp"
 
 namespace dda::df {

@@ -11,7 +11,7 @@
 #include <map>
 #include <string>
 
-#include "dda/df/simulation.hpp"
+#include "dda/df/2d/simulation.hpp"
 #include "df_test_models.hpp"
 #include "spring_slider_model.hpp"
 

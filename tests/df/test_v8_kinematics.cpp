@@ -7,8 +7,8 @@
 #include <array>
 
 #include "df_test_models.hpp"
-#include "dda/df/block_kinematics.hpp"
-#include "dda/df/simulation.hpp"
+#include "dda/df/2d/block_kinematics.hpp"
+#include "dda/df/2d/simulation.hpp"
 
 namespace dda::df {
 namespace {

@@ -25,11 +25,11 @@
 #include <numbers>
 #include <vector>
 
-#include "df3_test_models.hpp"
+#include "df_test_models3d.hpp"
 #include "df_test_models.hpp"
-#include "dda/df/damping.hpp"
-#include "dda/df/simulation.hpp"
-#include "dda/df/simulation3d.hpp"
+#include "dda/df/core/damping.hpp"
+#include "dda/df/2d/simulation.hpp"
+#include "dda/df/3d/simulation3d.hpp"
 
 namespace dda::df {
 namespace {

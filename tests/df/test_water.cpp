@@ -1,4 +1,4 @@
-// Joint water (df/include/dda/df/water.hpp, docs/formulation.md "Joint
+// Joint water (df/include/dda/df/core/water.hpp, docs/formulation.md "Joint
 // water"): the pore pressure's integral over joint faces against hand
 // integrals, and a 2D block on an incline with a water table against the
 // effective-stress limit equilibrium
@@ -11,9 +11,9 @@
 #include <cstdio>
 
 #include "df_test_models.hpp"
-#include "dda/df/simulation.hpp"
-#include "dda/df/water.hpp"
-#include "water_faces.hpp"
+#include "dda/df/2d/simulation.hpp"
+#include "dda/df/core/water.hpp"
+#include "core/water_faces.hpp"
 
 namespace dda::df {
 namespace {

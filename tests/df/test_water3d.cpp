@@ -1,4 +1,4 @@
-// Joint water in the 3D solver (df/water.hpp, df/src/water_faces3d.cpp):
+// Joint water in the 3D solver (df/core/water.hpp, df/src/3d/water_faces3d.cpp):
 // V1's 1 m cube on a fixed plane dipping 20 degrees (tests/df/
 // test_simulation3d.cpp), with a water table that loads the joint under it,
 // against the effective-stress limit equilibrium
@@ -11,8 +11,8 @@
 #include <cstdio>
 #include <numbers>
 
-#include "dda/df/simulation3d.hpp"
-#include "df3_test_models.hpp"
+#include "dda/df/3d/simulation3d.hpp"
+#include "df_test_models3d.hpp"
 
 namespace dda::df3 {
 namespace {

@@ -10,8 +10,8 @@
 #include <cmath>
 #include <complex>
 
-#include "dda/df/simulation.hpp"
-#include "dda/df/viscous_boundary.hpp"
+#include "dda/df/2d/simulation.hpp"
+#include "dda/df/2d/viscous_boundary.hpp"
 #include "wave_test_models.hpp"
 
 namespace dda::df {

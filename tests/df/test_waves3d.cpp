@@ -1,25 +1,25 @@
 // Waves through 3D blocks and the 3D viscous boundary
-// (viscous_boundary3.hpp), against the closed forms the 2D tests
+// (viscous_boundary3d.hpp), against the closed forms the 2D tests
 // (test_waves.cpp) check: the 1D layer's transfer function on an elastic
 // half-space, a single joint's transmission coefficient, a pulse that
 // doubles at the free surface and leaves through the base with the energy
 // it brought, and a resumed run.
 //
-// The models are vertical columns of square plates (wave_test_models3.hpp)
+// The models are vertical columns of square plates (wave_test_models3d.hpp)
 // with nu = 0, so that a plate free at its sides carries a vertical (P) wave
 // at sqrt(E / rho) = the constrained-modulus speed the dashpots take: the
 // column is the 1D medium. Unbonded contacts carry no tension, so the column is
 // held together by two opposite point loads (on the lowest and the highest
 // plate), well above the waves' stresses; the run starts from their
-// equilibrium (the plates' initial stress, wave_test_models3.hpp).
+// equilibrium (the plates' initial stress, wave_test_models3d.hpp).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <complex>
 
-#include "dda/df/lysmer_dashpot.hpp"
-#include "dda/df/simulation3d.hpp"
-#include "wave_test_models3.hpp"
+#include "dda/df/core/lysmer_dashpot.hpp"
+#include "dda/df/3d/simulation3d.hpp"
+#include "wave_test_models3d.hpp"
 
 namespace dda::df3 {
 namespace {
@@ -105,7 +105,7 @@ TEST(Waves3, LayerOnAnElasticHalfSpaceHasThe1DTransferFunction) {
 // the input amplitude (within 5 %, the 2D test's tolerance). Obtained:
 // 0.7047, 0.8888, 0.9660. The precompression, 5e3 Pa (3.5 times the
 // incident wave's Z v = 1414 Pa), closes the softest joint by 0.23 mm,
-// well inside the contact merge distance (wave_test_models3.hpp says what
+// well inside the contact merge distance (wave_test_models3d.hpp says what
 // 1e5 Pa did: eight contacts, |T| 0.89 / 0.97 / 74).
 TEST(Waves3, V9JointTransmissionMatchesTheDisplacementDiscontinuityModel) {
   Column3 c;

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "dda/common/line_model.hpp"
-#include "dda/df/model.hpp"
+#include "dda/df/2d/model.hpp"
 #include "df_test_models.hpp"
 #include "tapered_sine.hpp"
 

@@ -7,7 +7,7 @@
 
 #include "dda/common/error.hpp"
 #include "dda/dl/import3d.hpp"
-#include "dda/dl/polygon3.hpp"
+#include "dda/dl/polygon3d.hpp"
 #include "dl_test_util.hpp"
 
 namespace dda::dl {

@@ -9,7 +9,7 @@
 #include "dda/common/error.hpp"
 #include "dda/dl/dfn3d.hpp"
 #include "dda/dl/layering3d.hpp"
-#include "dda/dl/polygon3.hpp"
+#include "dda/dl/polygon3d.hpp"
 
 namespace dda::dl {
 

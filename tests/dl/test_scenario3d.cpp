@@ -11,7 +11,7 @@
 #include "dda/common/geometry.hpp"
 #include "dda/common/scenario.hpp"
 #include "dda/dl/dfn3d.hpp"
-#include "dda/dl/fracture_measures3.hpp"
+#include "dda/dl/fracture_measures3d.hpp"
 #include "dda/dl/fractures3d.hpp"
 #include "dda/dl/scenario3d.hpp"
 #include "dl_test_util.hpp"

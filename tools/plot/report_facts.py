@@ -10,7 +10,7 @@ import numpy as np
 
 from results_quantities import readable_unit
 
-# As df/energy.hpp: energy created beyond this share of the energy moved is
+# As df/core/energy.hpp: energy created beyond this share of the energy moved is
 # reported (dda df warns, dda info shows it).
 ENERGY_CREATED_WARNING = 0.1
 

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "dda/df/bolt_law.hpp"
+#include "dda/df/core/bolt_law.hpp"
 
 namespace dda::cli {
 

@@ -4,7 +4,7 @@
 #include "dda/common/coordinate_range.hpp"
 #include "dda/common/error.hpp"
 #include "dda/common/model_io.hpp"
-#include "dda/common/model_io3.hpp"
+#include "dda/common/model_io3d.hpp"
 #include "dda/common/output_guard.hpp"
 #include "dda/common/vtk.hpp"
 #include "dda/common/vtk3d.hpp"

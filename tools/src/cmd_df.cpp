@@ -7,21 +7,21 @@
 // so often, with a checkpoint), so an interrupted run resumes where it was.
 // The job and its resumption are df_job.hpp's, shared with 3D; here is what
 // is 2D's own: the analysis file and the 2D types. A 3D blocks file (and a
-// 3D results file to resume) goes to cmd_df3.cpp.
+// 3D results file to resume) goes to cmd_df3d.cpp.
 #include <filesystem>
 #include <iostream>
 
 #include "commands.hpp"
 #include "dda/common/error.hpp"
 #include "dda/common/model_io.hpp"
-#include "dda/common/model_io3.hpp"
+#include "dda/common/model_io3d.hpp"
 #include "dda/common/output_guard.hpp"
 #include "dda/common/scenario.hpp"
 #include "dda/common/text_input.hpp"
-#include "dda/df/import_ana.hpp"
-#include "dda/df/results.hpp"
-#include "dda/df/results3d.hpp"
-#include "dda/df/scenario.hpp"
+#include "dda/df/io/import_ana.hpp"
+#include "dda/df/io/results.hpp"
+#include "dda/df/io/results3d.hpp"
+#include "dda/df/io/scenario.hpp"
 #include "df_job.hpp"
 #include "pipeline.hpp"
 

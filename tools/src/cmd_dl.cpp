@@ -2,7 +2,7 @@
 // dda dl SCENARIO3D.yaml -o fractures.h5   (a scenario with dimension: 3)
 #include "commands.hpp"
 #include "dda/common/model_io.hpp"
-#include "dda/common/model_io3.hpp"
+#include "dda/common/model_io3d.hpp"
 #include "dda/common/output_guard.hpp"
 #include "dda/common/vtk.hpp"
 #include "dda/common/vtk3d.hpp"

@@ -14,8 +14,8 @@
 #include "dda/common/error.hpp"
 #include "dda/common/model_io.hpp"
 #include "dda/common/output_guard.hpp"
-#include "dda/df/results.hpp"
-#include "dda/df/results3d.hpp"
+#include "dda/df/io/results.hpp"
+#include "dda/df/io/results3d.hpp"
 #include "bolt_history.hpp"
 #include "results_points.hpp"
 
@@ -138,7 +138,7 @@ std::string points_csv3(const df3::Results3& r, const std::vector<std::size_t>& 
   if (r.histories.empty()) {  // no measurement points: just the times
     put(out, r.log.empty() ? 0.0 : r.log.front().time - r.log.front().dt);
     out += "\n";
-    for (const df3::StepInfo3& st : r.log) {
+    for (const df3::StepRecord3& st : r.log) {
       put(out, st.time);
       out += "\n";
     }
@@ -160,7 +160,7 @@ std::string points_csv3(const df3::Results3& r, const std::vector<std::size_t>& 
 
 std::string steps_csv3(const df3::Results3& r) {
   std::string out = "step,t,dt,iterations,dt_cuts,converged,open,sliding,locked,max_displacement\n";
-  for (const df3::StepInfo3& s : r.log) {
+  for (const df3::StepRecord3& s : r.log) {
     out += std::to_string(s.step);
     put_all(out, {s.time, s.dt});
     out += "," + std::to_string(s.iterations) + "," + std::to_string(s.dt_cuts) + "," +

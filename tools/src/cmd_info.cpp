@@ -6,9 +6,9 @@
 #include "df_session.hpp"
 #include "dda/common/error.hpp"
 #include "dda/common/model_io.hpp"
-#include "dda/common/model_io3.hpp"
-#include "dda/df/results.hpp"
-#include "dda/df/results3d.hpp"
+#include "dda/common/model_io3d.hpp"
+#include "dda/df/io/results.hpp"
+#include "dda/df/io/results3d.hpp"
 
 namespace dda::cli {
 

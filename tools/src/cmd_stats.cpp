@@ -5,7 +5,7 @@
 
 #include "commands.hpp"
 #include "dda/common/model_io.hpp"
-#include "dda/common/model_io3.hpp"
+#include "dda/common/model_io3d.hpp"
 #include "dda/common/output_guard.hpp"
 #include "dda/dc/stats.hpp"
 #include "dda/dc/stats3d.hpp"

@@ -6,11 +6,11 @@
 #include "commands.hpp"
 #include "dda/common/error.hpp"
 #include "dda/common/model_io.hpp"
-#include "dda/common/model_io3.hpp"
+#include "dda/common/model_io3d.hpp"
 #include "dda/common/output_guard.hpp"
 #include "dda/common/vtk.hpp"
 #include "dda/dl/dfn3d.hpp"
-#include "dda/dl/polygon3.hpp"
+#include "dda/dl/polygon3d.hpp"
 #include "dda/dl/trace_plane.hpp"
 #include "pipeline.hpp"
 

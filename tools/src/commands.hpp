@@ -76,7 +76,7 @@ struct DfStage {
 // A forward run of a YAML scenario on `blocks` (read from `blocks_path`).
 void run_df_scenario(const YamlNode& root, const BlockModel& blocks, const std::string& blocks_path,
                      const DfStage& stage);
-// The same in 3D (cmd_df3.cpp): a dimension: 3 scenario on polyhedra.
+// The same in 3D (cmd_df3d.cpp): a dimension: 3 scenario on polyhedra.
 void run_df3_scenario(const YamlNode& root, const PolyhedronModel& blocks, const std::string& blocks_path,
                       const DfStage& stage);
 // `dda df --resume` of a dda-results3d file.

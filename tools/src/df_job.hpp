@@ -1,6 +1,6 @@
 #pragma once
 // The forward run behind `dda df`, `dda df --resume` and `dda run`, one
-// piece for 2D (cmd_df.cpp) and 3D (cmd_df3.cpp): what a run needs (the
+// piece for 2D (cmd_df.cpp) and 3D (cmd_df3d.cpp): what a run needs (the
 // Job), running it in the session of df_session.hpp, and resuming a saved
 // run from its results file.
 //
@@ -18,7 +18,7 @@
 #include "commands.hpp"
 #include "dda/common/error.hpp"
 #include "dda/common/yaml_reader.hpp"
-#include "dda/df/results.hpp"
+#include "dda/df/io/results.hpp"
 #include "df_session.hpp"
 #include "pipeline.hpp"
 

@@ -3,7 +3,7 @@
 // interface (df::RunWriter, run_loop.hpp): a small registry, one line per
 // output in RunOutputs' constructor. Each output is a RunWriter; what
 // differs by dimension it reaches by argument-dependent lookup
-// (write_results, write_frame_vtu in df/results.hpp and df/results3d.hpp).
+// (write_results, write_frame_vtu in df/io/results.hpp and df/io/results3d.hpp).
 // A new output is a RunWriter here and a line in the constructor.
 #include <filesystem>
 #include <memory>
@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "commands.hpp"
-#include "dda/df/bolts_vtk.hpp"
-#include "dda/df/run_loop.hpp"
+#include "dda/df/io/bolts_vtk.hpp"
+#include "dda/df/core/run_loop.hpp"
 #include "pipeline.hpp"
 
 namespace dda::cli {
@@ -35,7 +35,7 @@ class ParaViewSeries : public df::RunWriter<Sim, Results> {
   void frame(const Sim& sim, const Results& results, std::size_t index) override {
     write_frame_vtu(sim, results, (dir_ / frame_name("blocks", index)).string(),
                     contacts_ ? (dir_ / frame_name("contacts", index)).string() : std::string());
-    // The bolts of the frame (df/bolts_vtk.hpp), one overload per dimension.
+    // The bolts of the frame (df/io/bolts_vtk.hpp), one overload per dimension.
     const bool bolts = !sim.bolts().empty();
     using df::write_bolts_vtu;
     using df3::write_bolts_vtu;

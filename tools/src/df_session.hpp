@@ -1,6 +1,6 @@
 #pragma once
 // What `dda df` does around a forward run, 2D (cmd_df.cpp) and 3D
-// (cmd_df3.cpp) alike: the progress bar, Ctrl-C / SIGTERM as a clean stop,
+// (cmd_df3d.cpp) alike: the progress bar, Ctrl-C / SIGTERM as a clean stop,
 // the ParaView series, and the sentences that end a run.
 #include <algorithm>
 #include <chrono>
@@ -16,13 +16,13 @@
 
 #include "commands.hpp"
 #include "dda/common/yaml_reader.hpp"
-#include "dda/df/damping.hpp"
-#include "dda/df/energy.hpp"
-#include "dda/df/results.hpp"
+#include "dda/df/core/damping.hpp"
+#include "dda/df/core/energy.hpp"
+#include "dda/df/io/results.hpp"
 #include "pipeline.hpp"
-#include "dda/df/run_loop.hpp"
-#include "dda/df/run_threads.hpp"
-#include "dda/df/runaway.hpp"
+#include "dda/df/core/run_loop.hpp"
+#include "dda/df/core/run_threads.hpp"
+#include "dda/df/core/runaway.hpp"
 #include "df_outputs.hpp"
 
 namespace dda::cli {

@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "dda/df/results.hpp"
+#include "dda/df/io/results.hpp"
 
 namespace dda::cli {
 

@@ -5,13 +5,13 @@
 // vtk/{fractures.vtu, blocks3d.vtu, model.pvd} and
 // figures/{fractures, blocks3d, blocks3d_exploded}.png; a scenario with a
 // `control` section is then run forward in 3D into results.h5 and
-// vtk/{df.pvd, df_blocks_*.vtu, df_contacts_*.vtu} (cmd_df3.cpp).
+// vtk/{df.pvd, df_blocks_*.vtu, df_contacts_*.vtu} (cmd_df3d.cpp).
 #include <filesystem>
 
 #include "commands.hpp"
 #include "dda/common/error.hpp"
 #include "dda/common/model_io.hpp"
-#include "dda/common/model_io3.hpp"
+#include "dda/common/model_io3d.hpp"
 #include "dda/common/vtk.hpp"
 #include "dda/common/vtk3d.hpp"
 #include "dda/dc/cut.hpp"
@@ -19,7 +19,7 @@
 #include "dda/dc/stats3d.hpp"
 #include "dda/dl/scenario3d.hpp"
 #include "dda/dl/trace_plane.hpp"
-#include "dda/df/scenario.hpp"
+#include "dda/df/io/scenario.hpp"
 #include "pipeline.hpp"
 #include "pipeline3d.hpp"
 #include "plot_runner.hpp"

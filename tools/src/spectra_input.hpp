@@ -12,7 +12,7 @@
 #include "dda/analysis/sampling.hpp"
 #include "dda/analysis/table.hpp"
 #include "dda/common/record.hpp"
-#include "dda/df/results.hpp"
+#include "dda/df/io/results.hpp"
 
 namespace dda::cli {
 

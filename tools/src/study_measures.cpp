@@ -6,11 +6,11 @@
 
 #include "dda/common/error.hpp"
 #include "dda/common/geometry.hpp"
-#include "dda/common/geometry3.hpp"
+#include "dda/common/geometry3d.hpp"
 #include "dda/common/model_io.hpp"
 #include "dda/common/text_input.hpp"
-#include "dda/df/results.hpp"
-#include "dda/df/results3d.hpp"
+#include "dda/df/io/results.hpp"
+#include "dda/df/io/results3d.hpp"
 #include "results_points.hpp"
 
 namespace dda::cli {

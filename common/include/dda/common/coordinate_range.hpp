@@ -34,7 +34,7 @@
 
 #include "dda/common/fracture_model.hpp"
 #include "dda/common/geometry.hpp"
-#include "dda/common/geometry3.hpp"
+#include "dda/common/geometry3d.hpp"
 #include "dda/common/line_model.hpp"
 
 namespace dda {

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "dda/common/geometry3.hpp"
+#include "dda/common/geometry3d.hpp"
 #include "dda/common/line_model.hpp"  // JointSetInfo, LineKind, Layer, PointKind, set ids
 #include "dda/common/provenance.hpp"
 #include "dda/common/triangle_mesh.hpp"

@@ -6,7 +6,7 @@
 // model near the origin writes the same file as before local origins, and a
 // file without them (written before, or near the origin) means origin 0.
 #include "dda/common/geometry.hpp"
-#include "dda/common/geometry3.hpp"
+#include "dda/common/geometry3d.hpp"
 #include "dda/common/h5_util.hpp"
 
 namespace dda::io {

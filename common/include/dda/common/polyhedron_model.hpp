@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "dda/common/fracture_model.hpp"  // ModelPoint3
-#include "dda/common/geometry3.hpp"
+#include "dda/common/geometry3d.hpp"
 #include "dda/common/line_model.hpp"
 #include "dda/common/provenance.hpp"
 

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "dda/common/geometry3.hpp"
+#include "dda/common/geometry3d.hpp"
 
 namespace dda {
 

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "dda/common/geometry.hpp"
-#include "dda/common/geometry3.hpp"
+#include "dda/common/geometry3d.hpp"
 
 namespace dda {
 

@@ -13,7 +13,7 @@
 // component), else the body is removable but gravity alone holds it.
 #include <vector>
 
-#include "dda/common/geometry3.hpp"
+#include "dda/common/geometry3d.hpp"
 #include "dda/common/polyhedron_model.hpp"
 
 namespace dda::dc {

@@ -19,7 +19,7 @@
 #include <utility>
 #include <vector>
 
-#include "dda/common/geometry3.hpp"
+#include "dda/common/geometry3d.hpp"
 #include "dda/dl/random.hpp"
 
 namespace dda::dl {
@@ -31,7 +31,7 @@ struct Disc {
   int set = 0;
 };
 
-// The domain box is the common dda::Box3 (geometry3.hpp).
+// The domain box is the common dda::Box3 (geometry3d.hpp).
 using dda::Box3;
 
 // InputError unless every lo < hi and all are finite; `what` names the box.

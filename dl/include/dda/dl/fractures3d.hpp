@@ -13,7 +13,7 @@
 
 #include "dda/common/fracture_model.hpp"
 #include "dda/dl/dfn3d.hpp"
-#include "dda/dl/polygon3.hpp"
+#include "dda/dl/polygon3d.hpp"
 #include "dda/dl/random.hpp"
 
 namespace dda::dl {

@@ -43,7 +43,7 @@ struct BedSetStats {
   double realised_fsi = 0;       // drawn bed thickness / median_spacing() (0 if fewer than two joints)
 };
 
-struct Layering3Output {
+struct LayeringOutput3 {
   Vec3 bed_normal{0, 0, 1};           // unit, upper hemisphere
   std::vector<Layer> layers;          // bottom to top along bed_normal; FSIs of the first set
   std::vector<double> drawn_thickness;  // per bed; the top bed is cut by the domain
@@ -66,11 +66,11 @@ double expected_bed_count3(const LayeringSpec3& spec, const Box3& domain);
 // first joint a random fraction of one spacing before the box), then one
 // spacing draw per joint. InputError for bad parameters (naming the set) or
 // a joint set parallel to the beds (less than 5 degrees apart, as in 2D).
-Layering3Output generate_layering3d(const LayeringSpec3& spec, const Box3& domain, std::uint64_t seed);
+LayeringOutput3 generate_layering3d(const LayeringSpec3& spec, const Box3& domain, std::uint64_t seed);
 
 // Appends the output to a model: one set per joint set (origin "layered") and
 // the bedding set (origin "bedding", named spec.bedding_set), the fractures
 // with their set indices shifted accordingly, the layers and the bed normal.
-void add_layering(FractureModel& model, const LayeringSpec3& spec, const Layering3Output& out);
+void add_layering(FractureModel& model, const LayeringSpec3& spec, const LayeringOutput3& out);
 
 }  // namespace dda::dl
