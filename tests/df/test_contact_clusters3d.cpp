@@ -122,7 +122,9 @@ TEST(ContactClusters3, EveryAcceptedStepMeetsTheContactConditions) {
                 "contact-steps checked, %ld cluster solves; top brick settled %.6g m\n",
                 clusters ? "on" : "off", locked, sliding, sim.timings().local_solves, top[clusters ? 0 : 1].z());
     EXPECT_GT(locked, 0);
-    if (clusters) EXPECT_GT(sim.timings().local_solves, 0);
+    if (clusters) {
+      EXPECT_GT(sim.timings().local_solves, 0);
+    }
   }
   // The settlement (0.13 mm, the bounce on the springs) is the same
   // to the accuracy of the trial solves. (The sideways sway, a few

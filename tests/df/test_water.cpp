@@ -13,7 +13,8 @@
 #include "df_test_models.hpp"
 #include "dda/df/2d/simulation.hpp"
 #include "dda/df/core/water.hpp"
-#include "core/water_faces.hpp"
+#include "2d/water_faces.hpp"
+#include "3d/water_faces3d.hpp"
 
 namespace dda::df {
 namespace {

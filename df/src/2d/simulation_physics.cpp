@@ -9,7 +9,7 @@
 #include "dda/df/2d/viscous_boundary.hpp"
 #include "2d/block_terms.hpp"
 #include "core/energy_ledger.hpp"
-#include "core/water_faces.hpp"
+#include "2d/water_faces.hpp"
 
 namespace dda::df {
 namespace {

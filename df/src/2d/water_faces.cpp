@@ -4,7 +4,7 @@
 #include <set>
 #include <tuple>
 
-#include "core/water_faces.hpp"
+#include "2d/water_faces.hpp"
 
 namespace dda::df {
 

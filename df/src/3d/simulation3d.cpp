@@ -7,7 +7,7 @@
 #include "3d/simulation3d_assembly.hpp"
 #include "core/start_up_relax.hpp"
 #include "core/step_control.hpp"
-#include "core/water_faces.hpp"
+#include "3d/water_faces3d.hpp"
 #include "dda/common/error.hpp"
 #include "dda/df/core/runaway.hpp"
 

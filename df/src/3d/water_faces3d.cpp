@@ -1,6 +1,6 @@
-// Joint water loads of the 3D solver (water_faces.hpp).
+// Joint water loads of the 3D solver (water_faces3d.hpp).
 #include "3d/facing_patches3d.hpp"
-#include "core/water_faces.hpp"
+#include "3d/water_faces3d.hpp"
 
 namespace dda::df {
 

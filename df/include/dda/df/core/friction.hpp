@@ -12,7 +12,7 @@
 
 #include "dda/common/error.hpp"
 #include "dda/common/yaml_reader.hpp"
-#include "dda/df/2d/model.hpp"
+#include "dda/df/core/joint_properties.hpp"
 
 namespace dda::df {
 

@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "dda/common/yaml_reader.hpp"  // Range
-#include "dda/df/2d/model.hpp"
+#include "dda/df/core/joint_properties.hpp"
 
 namespace dda::df {
 

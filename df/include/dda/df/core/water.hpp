@@ -55,7 +55,7 @@ struct PressureResultant {
 
 // One of the loads the water puts on the blocks: `force` on material point
 // `at` of `block` (the solvers' kernels make them in equal and opposite
-// pairs, df/src/core/water_faces.hpp).
+// pairs, df/src/2d/water_faces.hpp and df/src/3d/water_faces3d.hpp).
 template <int dim>
 struct WaterLoad {
   int block = -1;

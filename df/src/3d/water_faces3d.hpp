@@ -6,22 +6,13 @@
 // The resultant pushes both blocks apart along the face normal: an equal
 // and opposite pair of point loads at the centre of pressure, constant over
 // the step (taken from the geometry at its start, as gravity is).
+// This is the 3D kernel's finder; the 2D one is 2d/water_faces.hpp.
 #include <vector>
 
-#include "dda/df/2d/contact.hpp"
 #include "dda/df/3d/simulation3d.hpp"
 #include "dda/df/core/water.hpp"
 
 namespace dda::df {
-
-// 2D: the faces of the contacts (an edge of the edge block and an edge of
-// the vertex block at the vertex, antiparallel within 10 degrees, and no
-// further apart than `reach`), each pair once, their common stretch on the
-// edge block's edge loaded with u times saturation[joint of the contact].
-// Glued contacts (DC's artificial cuts) carry no water.
-std::vector<WaterLoad<2>> water_loads_2d(const WaterTable<2>& water, const std::vector<double>& saturation,
-                                         const std::vector<const Polygon2*>& blocks,
-                                         const std::vector<Contact>& contacts, double reach);
 
 // 3D: the faces of the vertex-face contacts (the face of block j and the
 // faces of block i at the vertex antiparallel to it within 10 degrees, all
