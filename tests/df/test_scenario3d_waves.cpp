@@ -7,7 +7,10 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <string>
+
+#include <unistd.h>
 
 #include "dda/common/error.hpp"
 #include "dda/df/io/scenario3d.hpp"
@@ -50,13 +53,32 @@ std::string replaced(std::string text, const std::string& from, const std::strin
   return at == std::string::npos ? text : text.replace(at, from.size(), to);
 }
 
-// The record eq.csv in the test's temporary folder: a_z = the derivative of
+// This process's own folder under the temporary one: ctest runs each test
+// of this file as a process of its own, in parallel, and a record rewritten
+// in a shared folder was read empty by a test running beside it.
+// (tests/common/scratch_dir_test.hpp does this for a fixture; these tests
+// share free functions.) Removed when the process ends.
+std::string own_dir() {
+  struct Folder {
+    std::filesystem::path path =
+        std::filesystem::path(::testing::TempDir()) / ("scenario3d_waves_" + std::to_string(::getpid()));
+    Folder() { std::filesystem::create_directories(path); }
+    ~Folder() {
+      std::error_code ignored;
+      std::filesystem::remove_all(path, ignored);
+    }
+  };
+  static const Folder folder;
+  return folder.path.string() + "/";
+}
+
+// The record eq.csv in the test's own folder: a_z = the derivative of
 // the outcrop velocity v_g(t) = 2 a sin^2(pi t / tau), 0 <= t <= tau (a =
 // 1e-3 m/s, tau = 0.1 s), sampled every 0.25 ms (linear between samples:
 // its exact integral, v_g, then matches the smooth pulse within 2.1e-5 of
 // its peak: the trapezoidal rule's h^2 omega^2 / 12), then at rest. Returns the scenario's path next to it.
 std::string write_record() {
-  const std::string dir = ::testing::TempDir();
+  const std::string dir = own_dir();
   std::FILE* f = std::fopen((dir + "eq.csv").c_str(), "w");
   EXPECT_NE(f, nullptr);
   std::fputs("t,a\n", f);
@@ -77,7 +99,7 @@ DfScenario3 read(const std::string& text, const PolyhedronModel& blocks = column
 // The message without the temporary folder the scenario is read from.
 std::string error_of(const std::string& text, const PolyhedronModel& blocks = column_blocks(4)) {
   std::string message = dda::testing::input_error_of([&] { read(text, blocks); });
-  const std::string dir = ::testing::TempDir();
+  const std::string dir = own_dir();
   if (message.rfind(dir, 0) == 0) message.erase(0, dir.size());
   return message;
 }
@@ -113,7 +135,7 @@ TEST(Scenario3dWaves, BottomAndTopFacesAndTheIncidentWave) {
 // 6.25e-4 m/s (from the record's two rows alone, 1.25e-3).
 TEST(Scenario3dWaves, IncidentWaveFollowsTheRecordBetweenItsRows) {
   const std::string path = write_record();
-  std::FILE* f = std::fopen((::testing::TempDir() + "ramp.csv").c_str(), "w");
+  std::FILE* f = std::fopen((own_dir() + "ramp.csv").c_str(), "w");
   ASSERT_NE(f, nullptr);
   std::fputs("t,a\n0,0\n0.01,1\n", f);
   std::fclose(f);
