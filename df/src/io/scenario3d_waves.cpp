@@ -10,6 +10,7 @@
 #include "dda/common/error.hpp"
 #include "dda/df/3d/simulation3d.hpp"
 #include "io/scenario3d_detail.hpp"
+#include "io/scenario_record.hpp"
 
 namespace dda::df3 {
 namespace {
@@ -64,9 +65,7 @@ void add_viscous_boundary3(const YamlNode& root, const PolyhedronModel& blocks, 
   const std::vector<std::string>& sides = both.viscous;
   const bool incident = m.earthquake.mode && m.earthquake.mode->name() == "incident";
   const auto earthquake = [&] { return root.child("loading").child("earthquake"); };
-  if (!both.free_field.empty() && !incident)
-    root.child("boundaries").fail_key("free_field", "needs an incident wave (loading.earthquake with mode: "
-                                                    "incident): the free field is the motion that wave gives the rock");
+  df::require_incident_for_free_field(root, !both.free_field.empty(), incident);
   if (sides.empty()) {
     if (incident)
       earthquake().fail_key("mode", "incident sends the wave in through the viscous base, and boundaries.viscous "

@@ -13,6 +13,7 @@
 #include "dda/df/core/time_step.hpp"
 #include "io/scenario_block_points.hpp"
 #include "io/scenario_earthquake.hpp"
+#include "io/scenario_record.hpp"
 #include "io/scenario_bolts.hpp"
 #include "io/scenario_control.hpp"
 #include "io/scenario_joints.hpp"
@@ -513,12 +514,7 @@ DfScenario read_df_scenario(const YamlNode& root, const BlockModel& blocks, cons
   add_boundary_fixes(blocks, p.fixed_sides, in);
   if (!p.fixed_sides.empty() && in.fixed_points.empty() && p.fixed_boundary_node)
     p.fixed_boundary_node->fail("fixes nothing: no block has a domain-boundary edge on those sides");
-  // As in 3D (scenario3d_waves.cpp): a free field is the motion an incident
-  // wave gives the rock; without one, free-field sides would be plain
-  // dashpots under another name.
-  if (!p.free_field_sides.empty() && !(p.earthquake && p.earthquake->mode == "incident"))
-    root.child("boundaries").fail_key("free_field", "needs an incident wave (loading.earthquake with mode: "
-                                                    "incident): the free field is the motion that wave gives the rock");
+  require_incident_for_free_field(root, !p.free_field_sides.empty(), p.earthquake && p.earthquake->mode == "incident");
   const ViscousSides viscous = add_viscous_boundary(blocks, p.viscous_sides, p.free_field_sides, in);
   if (p.viscous_node && !in.viscous_boundary->edges.size())
     p.viscous_node->fail("holds nothing: no block has a domain-boundary edge on those sides");

@@ -100,4 +100,10 @@ void fail_record(const YamlNode& n, const RecordEntry& e, const std::function<vo
   n.fail_key(read_ok && e.processing.filter ? "filter" : "record", "cannot be used: " + sentence_tail(err));
 }
 
+void require_incident_for_free_field(const YamlNode& root, bool free_field, bool incident) {
+  if (free_field && !incident)
+    root.child("boundaries").fail_key("free_field", "needs an incident wave (loading.earthquake with mode: "
+                                                    "incident): the free field is the motion that wave gives the rock");
+}
+
 }  // namespace dda::df

@@ -33,4 +33,10 @@ RecordEntry read_record_entry(const YamlNode& n, int dimension, int default_base
 [[noreturn]] void fail_record(const YamlNode& n, const RecordEntry& e, const std::function<void()>& read_plain,
                               const InputError& err);
 
+// boundaries.free_field (both dimensions) only beside an incident wave: the
+// free field is the motion that wave gives the rock, so without one the
+// sides would be plain dashpots under another name. InputError at
+// boundaries.free_field when `free_field` but not `incident`.
+void require_incident_for_free_field(const YamlNode& root, bool free_field, bool incident);
+
 }  // namespace dda::df
