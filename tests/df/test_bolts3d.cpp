@@ -240,7 +240,7 @@ TEST(Bolts3d, GroundMovingTheFixedEndDragsTheCubeAndItsWorkIsBooked) {
   Model3 m = hanging_cube(dt);
   m.gravity = {0, 0, 0};
   m.earthquake = {std::make_shared<GroundMotion3>(std::vector<double>{0, 1}, std::vector<Vec3>{{0, 0, a}, {0, 0, a}}),
-                  make_ground_motion_mode3("displacement")};
+                  &df::ground_motion_mode("displacement")};
   Simulation3 sim(m);
   run_for(sim, dt, static_cast<int>(0.75 * period / dt));
   const auto& h = sim.bolt_histories()[0];

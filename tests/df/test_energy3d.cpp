@@ -109,7 +109,7 @@ TEST(Energy3, GroundShakingIsCountedInBothModes) {
       t.push_back(k * 1e-3);
       a.push_back(Vec3(a0 * std::sin(w * k * 1e-3), 0, 0));
     }
-    m.earthquake = {std::make_shared<GroundMotion3>(t, a), make_ground_motion_mode3(mode)};
+    m.earthquake = {std::make_shared<GroundMotion3>(t, a), &df::ground_motion_mode(mode)};
     Simulation3 sim(m);
     sim.start();
     for (int s = 0; s < 1000; ++s) sim.step(1e-3);

@@ -155,7 +155,7 @@ TEST(Scenario3d, EarthquakeInThreeComponents) {
   const DfScenario3 s = read_df3_scenario(YamlNode::load_string(text, dir + "/s.yaml"),
                                           testing::incline_blocks(points()), "b3.h5");
   ASSERT_TRUE(s.model.earthquake.motion);
-  EXPECT_EQ(s.model.earthquake.mode->name(), "displacement");
+  EXPECT_EQ(s.model.earthquake.mode->name, "displacement");
   // Displacement mode corrects the baseline (degree 3) by default, so only
   // the shape is checked: all three components act.
   const Vec3 a = s.model.earthquake.motion->acceleration(0.1);

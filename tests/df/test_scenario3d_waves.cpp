@@ -120,7 +120,7 @@ TEST(Scenario3dWaves, BottomAndTopFacesAndTheIncidentWave) {
   EXPECT_EQ(v.faces[1].block, 3);
   EXPECT_EQ(v.faces[1].face, 1);
   EXPECT_FALSE(v.faces[1].input);
-  EXPECT_EQ(s.model.earthquake.mode->name(), "incident");
+  EXPECT_EQ(s.model.earthquake.mode->name, "incident");
   EXPECT_NEAR(v.incident_velocity.at(0.05).z(), 1e-3, 1e-3 * 1e-4);
   EXPECT_EQ(v.incident_velocity.at(0.05).x(), 0);
   EXPECT_EQ(v.incident_velocity.at(0.2 + 0.0005), Vec3::Zero());

@@ -1,4 +1,5 @@
-// 3D earthquake input (df/3d/ground_motion3d.hpp) on validation case V3
+// 3D earthquake input (df/3d/ground_motion3d.hpp; the motion itself is tested in
+// test_ground_motion.cpp) on validation case V3
 // (docs/validation.md): a 1 m cube on a plane 20/090 with phi = 30,
 // under the resultant acceleration r(t) = g [0.5 sin 10t, 0, -1] for
 // t in [0, 2 pi] (ten cycles), and the same with a second horizontal
@@ -82,7 +83,7 @@ Trajectory dda(Vec3 (*body)(double), double t_end, const std::string& mode, doub
   m.normal_penalty = m.shear_penalty = penalty;
   m.gravity = {0, 0, -kG};
   m.control.initial_equilibrium = false;  // gravity switched on at t = 0: what the expected numbers assume
-  m.earthquake = {ground(body, t_end), make_ground_motion_mode3(mode)};
+  m.earthquake = {ground(body, t_end), &df::ground_motion_mode(mode)};
   Simulation3 sim(m);
   const Vec3 c0 = sim.blocks()[1].centroid, b0 = sim.blocks()[0].centroid;
   const double dt = 1e-3;
@@ -111,25 +112,6 @@ void compare(const char* what, const Trajectory& got, const Trajectory& expected
               worst_t);
   EXPECT_LT((g - e).norm(), 0.02 * e.norm());
   EXPECT_LT(worst, 0.02 * e.norm());
-}
-
-TEST(GroundMotion3, IntegratesAPiecewiseLinearRecordExactly) {
-  // a = (1, -2, 0.5) t on [0, 2]: v = a' t^2 / 2, d = a' t^3 / 6; then a = 0.
-  const Vec3 slope(1, -2, 0.5);
-  std::vector<double> t{0, 0.5, 1.25, 2};
-  std::vector<Vec3> a;
-  for (double x : t) a.push_back(slope * x);
-  const GroundMotion3 g(t, a);
-  for (double x : {0.3, 1.0, 1.9, 2.0}) {
-    EXPECT_LT((g.velocity(x) - slope * x * x / 2).norm(), 1e-12);
-    EXPECT_LT((g.displacement(x) - slope * x * x * x / 6).norm(), 1e-12);
-  }
-  // After the record the ground drifts on at its last velocity.
-  EXPECT_LT((g.displacement(3) - (slope * 8.0 / 6 + slope * 2.0)).norm(), 1e-12);
-  // The mean over a step is the exact impulse per unit time.
-  EXPECT_LT((g.mean_acceleration(0.2, 0.6) - slope * 0.4).norm(), 1e-12);
-  EXPECT_THROW(GroundMotion3({0, 0}, {Vec3::Zero(), Vec3::Zero()}), InputError);
-  EXPECT_THROW(make_ground_motion_mode3("velocity"), InputError);
 }
 
 TEST(Simulation3Earthquake, OneHorizontalComponentLoadingModeV3) {

@@ -358,7 +358,7 @@ TEST(Simulation3Wedge, ShakingTableMatchesTheAnalyticalSolutionV4) {
   auto slide = [&](const char* mode, double shear_ratio) {
     WedgeModel w = build(30, 1e11, Layout::SharedCorners);
     w.model.shear_penalty = shear_ratio * w.model.normal_penalty;
-    w.model.earthquake = {motion, make_ground_motion_mode3(mode)};
+    w.model.earthquake = {motion, &df::ground_motion_mode(mode)};
     Simulation3 sim(w.model);
     const auto k = static_cast<std::size_t>(w.wedge);
     std::size_t base = k == 0 ? 1 : 0;

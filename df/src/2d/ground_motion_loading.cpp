@@ -1,7 +1,8 @@
-// Earthquake, loading mode: the blocks feel the ground motion in the frame
-// of the ground, as the inertial body force -rho a_g(t) (added to gravity).
-// The foundation's blocks are left out: they are held by their fixed
-// points, and loading their springs with the force would only stretch them.
+// Earthquake, route body force (the loading mode): the blocks feel the
+// ground motion in the frame of the ground, as the inertial body force
+// -rho a_g(t) added to gravity. The foundation's blocks are left out: they
+// are held by their fixed points, and loading their springs with the force
+// would only stretch them.
 #include <algorithm>
 
 #include "dda/common/error.hpp"
@@ -9,8 +10,7 @@
 
 namespace dda::df {
 
-void LoadingMode::apply(const GroundMotion& motion, const std::vector<std::size_t>& foundation,
-                        ModelInput& in) const {
+void apply_body_force(const GroundMotion<2>& motion, const std::vector<std::size_t>& foundation, ModelInput& in) {
   if (in.body_acceleration) throw InputError("The model already has a body acceleration (one earthquake at most).");
   const std::vector<int> held = foundation_blocks(in, foundation);
   BodyAcceleration b;

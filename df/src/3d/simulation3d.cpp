@@ -277,7 +277,8 @@ void Simulation3::prepare_input(double dt) {
     // does not move.
     const double span = settling_ ? 0.0 : dt;
     body_acceleration_ += eq.mode->body_acceleration(*eq.motion, time_, span);
-    foundation = eq.mode->foundation_increment(*eq.motion, time_, span);
+    foundation = eq.mode->foundation_displacement(*eq.motion, time_ + span) -
+                 eq.mode->foundation_displacement(*eq.motion, time_);
   }
   for (size_t b = 0; b < known_.size(); ++b)
     if (dof_[b] < 0) known_[b].segment<3>(kTranslation) = foundation;

@@ -11,7 +11,7 @@
 namespace dda::df3 {
 
 void Simulation3::check_viscous() const {
-  const bool incident = model_.earthquake.mode && model_.earthquake.mode->name() == "incident";
+  const bool incident = model_.earthquake.mode && model_.earthquake.mode->route == df::GroundMotionRoute::incident_wave;
   if (!model_.viscous) {
     if (incident)
       throw InputError("The incident earthquake mode sends the wave in through a viscous boundary, and the model has "

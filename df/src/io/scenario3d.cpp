@@ -11,7 +11,6 @@
 
 #include "dda/common/coordinate_range.hpp"
 #include "dda/common/error.hpp"
-#include "dda/df/2d/ground_motion.hpp"
 #include "dda/df/core/time_step.hpp"
 #include "io/scenario3d_detail.hpp"
 #include "io/scenario_block_points.hpp"
@@ -54,29 +53,8 @@ GroundInput3 read_earthquake3(const YamlNode& n) {
   if (n.is_map() && n.has("foundation"))
     n.fail_key("foundation", "is a 2D key: in 3D the foundation is the fixed blocks (see fixed)");
   n.allow({"record", "units", "direction", "components", "scale", "resample", "filter", "ramp", "baseline", "mode"});
-  const std::string mode = n.choice("mode", {"loading", "displacement", "incident"}, "loading");
-  // The baseline default is the 2D mode's of the same name (0 loading, 3 displacement).
-  const df::RecordEntry r = df::read_record_entry(n, 3, df::make_ground_motion_mode(mode)->default_baseline());
-  RecordReadOptions options;
-  options.units = r.units;
-  options.direction = r.direction;
-  AccelRecord rec;
-  try {
-    rec = read_record(r.path, options);
-    process_record(rec, r.processing);
-  } catch (const InputError& err) {
-    df::fail_record(n, r, [&] { read_record(r.path, options); }, err);
-  }
-  std::vector<Vec3> a;
-  for (std::size_t i = 0; i < rec.size(); ++i) a.emplace_back(rec.a[0][i], rec.a[1][i], rec.a[2][i]);
-  GroundInput3 g;
-  try {
-    g.motion = std::make_shared<GroundMotion3>(rec.t, std::move(a));
-  } catch (const InputError& err) {
-    n.fail_key("record", "cannot be used: " + sentence_tail(err));
-  }
-  g.mode = make_ground_motion_mode3(mode);
-  return g;
+  df::EarthquakeRecord<3> r = df::read_earthquake_record<3>(n);
+  return {std::make_shared<GroundMotion3>(std::move(r.motion)), &df::ground_motion_mode(r.mode.name)};
 }
 
 void read_loading3(const YamlNode& root, Parsed3& p) {
@@ -344,7 +322,7 @@ DfScenario3 read_df3_scenario(const YamlNode& root, const PolyhedronModel& block
   add_bolts3(root, m.blocks, 1e-9 * reference_length(m.blocks), m);
   if (p.earthquake_node) {
     const bool any_fixed = std::find(m.fixed.begin(), m.fixed.end(), true) != m.fixed.end();
-    if (!any_fixed && p.earthquake.mode->name() == "displacement")
+    if (!any_fixed && p.earthquake.mode->route == df::GroundMotionRoute::foundation)
       p.earthquake_node->fail_key("mode", "displacement moves the fixed blocks (the foundation), but fixed holds no "
                                           "block");
     m.earthquake = p.earthquake;

@@ -63,7 +63,7 @@ void add_viscous_boundary3(const YamlNode& root, const PolyhedronModel& blocks, 
                            Model3& m) {
   const BoundarySides3 both = read_viscous_sides3(root);
   const std::vector<std::string>& sides = both.viscous;
-  const bool incident = m.earthquake.mode && m.earthquake.mode->name() == "incident";
+  const bool incident = m.earthquake.mode && m.earthquake.mode->route == df::GroundMotionRoute::incident_wave;
   const auto earthquake = [&] { return root.child("loading").child("earthquake"); };
   df::require_incident_for_free_field(root, !both.free_field.empty(), incident);
   if (sides.empty()) {
@@ -109,25 +109,11 @@ void add_viscous_boundary3(const YamlNode& root, const PolyhedronModel& blocks, 
     if (std::find(sides.begin(), sides.end(), "bottom") == sides.end())
       earthquake().fail_key("mode", "incident sends the wave in through the viscous base, and boundaries.viscous "
                                     "does not list bottom (add it there)");
-    // The record is the outcrop motion: the wave sent up has half its
-    // velocity, sampled (exactly) at the record's times and at most a step
-    // apart between them, as 2D refines its record, since the table is
-    // linear between rows and the velocity of a piecewise-linear
-    // acceleration is not; after the record it stops (as 2D).
-    const GroundMotion3& g = *m.earthquake.motion;
     const double step = m.control.dt > 0 ? m.control.dt : 1e-3;
-    const std::vector<double>& times = g.times();
-    for (std::size_t i = 0; i < times.size(); ++i) {
-      const int parts =
-          i == 0 ? 1 : std::max(1, static_cast<int>(std::ceil((times[i] - times[i - 1]) / step * (1 - 1e-9))));
-      for (int k = 1; k <= parts; ++k) {
-        const double t = k == parts ? times[i] : times[i - 1] + (times[i] - times[i - 1]) * k / parts;
-        v.incident_velocity.t.push_back(t);
-        v.incident_velocity.value.push_back(0.5 * g.velocity(t));
-      }
+    for (const auto& [t, velocity] : df::incident_velocity_rows(*m.earthquake.motion, step)) {
+      v.incident_velocity.t.push_back(t);
+      v.incident_velocity.value.push_back(velocity);
     }
-    v.incident_velocity.t.push_back(g.end() + step);
-    v.incident_velocity.value.push_back(Vec3::Zero());
   }
   m.viscous = std::move(v);
 }

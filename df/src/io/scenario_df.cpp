@@ -514,13 +514,14 @@ DfScenario read_df_scenario(const YamlNode& root, const BlockModel& blocks, cons
   add_boundary_fixes(blocks, p.fixed_sides, in);
   if (!p.fixed_sides.empty() && in.fixed_points.empty() && p.fixed_boundary_node)
     p.fixed_boundary_node->fail("fixes nothing: no block has a domain-boundary edge on those sides");
-  require_incident_for_free_field(root, !p.free_field_sides.empty(), p.earthquake && p.earthquake->mode == "incident");
+  const bool incident = p.earthquake && p.earthquake->record.mode.route == GroundMotionRoute::incident_wave;
+  require_incident_for_free_field(root, !p.free_field_sides.empty(), incident);
   const ViscousSides viscous = add_viscous_boundary(blocks, p.viscous_sides, p.free_field_sides, in);
   if (p.viscous_node && !in.viscous_boundary->edges.size())
     p.viscous_node->fail("holds nothing: no block has a domain-boundary edge on those sides");
   if (p.earthquake) {
     // The modes refine the record to the step: the step first.
-    choose_time_step(in, shortest_interval(p.earthquake->motion.t));
+    choose_time_step(in, shortest_interval(p.earthquake->record.motion.times()));
     apply_earthquake(*p.earthquake, p.fixed_sides, viscous, in);  // needs every fixed point
   }
 

@@ -1,43 +1,23 @@
-// loading.earthquake of the scenario into a GroundMotion and a mode
-// (scenario_earthquake.hpp; keys documented in docs/scenario.md).
+// loading.earthquake of a 2D scenario: the foundation, and the motion put
+// into the model (scenario_earthquake.hpp; keys in docs/scenario.md).
 #include "io/scenario_earthquake.hpp"
 
 #include <algorithm>
 #include <set>
 
 #include "dda/common/error.hpp"
-#include "io/scenario_record.hpp"
 
 namespace dda::df {
 
 EarthquakeEntry read_earthquake(const YamlNode& n) {
   n.allow({"record", "units", "direction", "components", "scale", "resample", "filter", "ramp", "baseline", "mode",
            "foundation"});
-  EarthquakeEntry e{n, "loading", {}, {}, std::nullopt};
-  e.mode = n.choice("mode", {"loading", "displacement", "incident"}, "loading");
-  const RecordEntry r = read_record_entry(n, 2, make_ground_motion_mode(e.mode)->default_baseline());
-  GroundMotionSpec& s = e.spec;
-  s.path = r.path;
-  s.units = r.units;
-  s.direction = r.direction.head<2>();
-  s.processing = r.processing;
+  EarthquakeEntry e{n, read_earthquake_record<2>(n), std::nullopt};
   if (n.has("foundation")) {
     e.foundation.emplace();
     const std::vector<YamlNode> items = n.list("foundation");
     if (items.empty()) n.fail_key("foundation", "must name at least one fixed point or side");
     for (const YamlNode& item : items) e.foundation->emplace_back(item, item.as_text());
-  }
-
-  try {
-    e.motion = load_ground_motion(s);
-  } catch (const InputError& err) {
-    fail_record(n, r, [&] {
-      GroundMotionSpec plain;
-      plain.path = s.path;
-      plain.units = s.units;
-      plain.direction = s.direction;
-      load_ground_motion(plain);
-    }, err);
   }
   return e;
 }
@@ -66,7 +46,7 @@ void mark_input_sides(const EarthquakeEntry& e, const ViscousSides& viscous, Mod
 void apply_earthquake(const EarthquakeEntry& e, const std::vector<std::string>& boundary_sides,
                       const ViscousSides& viscous, ModelInput& in) {
   std::vector<std::size_t> foundation;
-  if (e.mode == "incident") {
+  if (e.record.mode.route == GroundMotionRoute::incident_wave) {
     mark_input_sides(e, viscous, in);
   } else if (!e.foundation) {
     for (std::size_t k = 0; k < in.fixed_points.size(); ++k) foundation.push_back(k);
@@ -95,7 +75,7 @@ void apply_earthquake(const EarthquakeEntry& e, const std::vector<std::string>& 
     foundation.assign(chosen.begin(), chosen.end());
   }
   try {
-    make_ground_motion_mode(e.mode)->apply(e.motion, foundation, in);
+    apply_ground_motion(e.record.motion, e.record.mode, foundation, in);
   } catch (const InputError& err) {
     e.node.fail_key(e.foundation ? "foundation" : "mode", "cannot be applied: " + sentence_tail(err));
   }

@@ -1,6 +1,7 @@
 #pragma once
 // The scenario's loading.earthquake entry (private to DF; keys, units and
-// defaults in docs/scenario.md, the physics in ground_motion.hpp).
+// defaults in docs/scenario.md, the physics in core/ground_motion.hpp and
+// 2d/ground_motion.hpp).
 #include <map>
 #include <optional>
 #include <string>
@@ -8,6 +9,7 @@
 
 #include "dda/common/yaml_reader.hpp"
 #include "dda/df/2d/ground_motion.hpp"
+#include "io/scenario_record.hpp"
 
 namespace dda::df {
 
@@ -17,9 +19,7 @@ using ViscousSides = std::map<std::string, std::vector<std::size_t>>;
 
 struct EarthquakeEntry {
   YamlNode node;                           // loading.earthquake, for messages
-  std::string mode = "loading";
-  GroundMotionSpec spec;                   // path resolved against the scenario's folder
-  GroundMotion motion;                     // read and processed (so bad records fail early)
+  EarthquakeRecord<2> record;              // the mode, and the motion read and processed
   // Fixed point names or sides (bottom, top, left, right: the fixed.boundary
   // points of that side) with their nodes; none: every fixed point. In the
   // incident mode: the sides of boundaries.viscous the wave enters through

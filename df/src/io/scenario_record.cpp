@@ -4,9 +4,11 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <functional>
 
 #include "dda/common/error.hpp"
 #include "dda/common/scenario.hpp"
+#include "io/scenario_joints.hpp"
 
 namespace dda::df {
 namespace {
@@ -51,7 +53,12 @@ Vec3 read_direction(const YamlNode& n, int dimension) {
   return dir.normalized();
 }
 
-}  // namespace
+struct RecordEntry {
+  std::string path;                            // resolved against the scenario's folder
+  AccelUnits units = AccelUnits::unspecified;  // required for CSV
+  Vec3 direction{1, 0, 0};                     // of a one-component record, unit
+  RecordProcessing processing;
+};
 
 RecordEntry read_record_entry(const YamlNode& n, int dimension, int default_baseline) {
   RecordEntry e;
@@ -89,8 +96,12 @@ RecordEntry read_record_entry(const YamlNode& n, int dimension, int default_base
   return e;
 }
 
-void fail_record(const YamlNode& n, const RecordEntry& e, const std::function<void()>& read_plain,
-                 const InputError& err) {
+// Reports `err`, raised while reading and processing the record of `e`, at
+// the key it belongs to: `filter` when the record reads on its own
+// (`read_plain` does not throw: the filter does not fit the sampling),
+// else `record`.
+[[noreturn]] void fail_record(const YamlNode& n, const RecordEntry& e, const std::function<void()>& read_plain,
+                              const InputError& err) {
   bool read_ok = true;
   try {
     read_plain();
@@ -99,6 +110,38 @@ void fail_record(const YamlNode& n, const RecordEntry& e, const std::function<vo
   }
   n.fail_key(read_ok && e.processing.filter ? "filter" : "record", "cannot be used: " + sentence_tail(err));
 }
+
+}  // namespace
+
+template <int dim>
+EarthquakeRecord<dim> read_earthquake_record(const YamlNode& n) {
+  const std::string name = n.has("mode") ? n.text("mode") : "loading";
+  const std::vector<std::string> names = ground_motion_mode_names();
+  if (std::find(names.begin(), names.end(), name) == names.end())
+    n.child("mode").fail("must be one of " + join_names(names) + ", got '" + name + "'");
+  const GroundMotionMode& mode = ground_motion_mode(name);
+  const RecordEntry r = read_record_entry(n, dim, mode.default_baseline);
+  RecordReadOptions options;
+  options.units = r.units;
+  options.direction = r.direction;
+  // The plain record must fit the model before any processing (a 2D model
+  // refuses a z column even when `components` would drop it).
+  const auto read_plain = [&] {
+    AccelRecord rec = read_record(r.path, options);
+    check_record_fits<dim>(rec);
+    return rec;
+  };
+  try {
+    AccelRecord rec = read_plain();
+    process_record(rec, r.processing);
+    return {mode, ground_motion_of<dim>(rec)};
+  } catch (const InputError& err) {
+    fail_record(n, r, [&] { read_plain(); }, err);
+  }
+}
+
+template EarthquakeRecord<2> read_earthquake_record<2>(const YamlNode&);
+template EarthquakeRecord<3> read_earthquake_record<3>(const YamlNode&);
 
 void require_incident_for_free_field(const YamlNode& root, bool free_field, bool incident) {
   if (free_field && !incident)

@@ -1,9 +1,8 @@
 #pragma once
-// The record keys of loading.earthquake that the 2D and the 3D scenario
-// share (private to DF; documented in docs/scenario.md): record, units,
-// direction, components, scale, resample, filter, ramp, baseline. What the
-// motion then does (the modes, the foundation) is each dimension's own.
-#include <functional>
+// The keys of loading.earthquake that the 2D and the 3D scenario share
+// (private to DF; documented in docs/scenario.md): mode, record, units,
+// direction, components, scale, resample, filter, ramp, baseline. Where the
+// motion goes (the foundation, the viscous sides) is each kernel's own.
 #include <string>
 
 #include "dda/common/error.hpp"
@@ -11,27 +10,25 @@
 #include "dda/common/record.hpp"
 #include "dda/common/yaml_reader.hpp"
 #include "dda/common/sentence_tail.hpp"
+#include "dda/df/core/ground_motion.hpp"
 
 namespace dda::df {
 
-struct RecordEntry {
-  std::string path;                            // resolved against the scenario's folder
-  AccelUnits units = AccelUnits::unspecified;  // required for CSV
-  Vec3 direction{1, 0, 0};                     // of a one-component record, unit
-  RecordProcessing processing;
+// What loading.earthquake gives both dimensions: the mode and the motion.
+template <int dim>
+struct EarthquakeRecord {
+  GroundMotionMode mode;
+  GroundMotion<dim> motion;  // read and processed (so bad records fail early)
 };
 
-// Reads the shared keys of `n` (which the caller has allow()ed).
-// `dimension` 2: direction [dx, dy] and components x, y (y vertical);
-// 3: [dx, dy, dz] and x, y, z (z up). `default_baseline`: the mode's.
-RecordEntry read_record_entry(const YamlNode& n, int dimension, int default_baseline);
-
-// Reports `err`, raised while reading and processing the record of `e`, at
-// the key it belongs to: `filter` when the record reads on its own
-// (`read_plain` does not throw: the filter does not fit the sampling),
-// else `record`.
-[[noreturn]] void fail_record(const YamlNode& n, const RecordEntry& e, const std::function<void()>& read_plain,
-                              const InputError& err);
+// Reads `mode` and the record keys of `n` (which the caller has allow()ed)
+// and the record itself, processed. Components: 2D x, y (y vertical; a
+// direction is [dx, dy]); 3D x, y, z (z up; [dx, dy, dz]). The baseline
+// default is the mode's. InputError with the scenario file, line and key
+// (`filter` when the record reads but the filter does not fit its
+// sampling, else `record`, with the record file and line of a bad record).
+template <int dim>
+EarthquakeRecord<dim> read_earthquake_record(const YamlNode& n);
 
 // boundaries.free_field (both dimensions) only beside an incident wave: the
 // free field is the motion that wave gives the rock, so without one the
