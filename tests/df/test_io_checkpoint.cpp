@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <unistd.h>
 
 #include "dda/common/error.hpp"
 #include "dda/df/io/results.hpp"
@@ -135,6 +136,63 @@ TEST_P(IoCheckpoint, ResumeReproducesTheUninterruptedRun) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Solvers, IoCheckpoint, ::testing::Values("cholmod", "pcg"));
+
+// A 1 x 1 m block held by fixed points and a 2 x 1 m block beside it,
+// joined by one of DC's artificial cuts: the second hangs on the glue as a
+// cantilever, its cut in tension at the top.
+ModelInput glued_cantilever() {
+  ModelInput in;
+  Block left = test::make_block(test::rectangle(0, 0, 1, 1), kBoundarySet);
+  Block right = test::make_block(test::rectangle(1, 0, 2, 1), kBoundarySet);
+  left.edge_set[1] = kArtificialSet;   // (1,0) -> (1,1)
+  right.edge_set[3] = kArtificialSet;  // (1,1) -> (1,0)
+  in.geometry.blocks = {left, right};
+  in.materials = {test::rock(2000, 1e10)};
+  in.control.dt = 1e-3;
+  in.control.steps = 60;
+  for (const Vec2& p : {Vec2(0.2, 0.2), Vec2(0.8, 0.2), Vec2(0.5, 0.8)}) in.fixed_points.push_back({"f", p, 0, {}});
+  in.measurements.push_back({"tip", {2.9, 0.5}, 1});
+  return in;
+}
+
+TEST(IoCheckpoint, AResumedRunKeepsTheGlueOfArtificialCuts) {
+  // The file keeps each contact's bond; a run resumed from it must find
+  // its glued contacts glued again, or the cantilever falls off its cut
+  // (the joint behind an artificial cut has no tensile strength).
+  const fs::path dir = fs::temp_directory_path() / ("dda_io_checkpoint_glue_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string whole = (dir / "whole.h5").string(), part = (dir / "part.h5").string();
+  const ModelInput in = glued_cantilever();
+  {
+    Simulation sim(build_model(in));
+    Results r = test::fresh_results(in);
+    EXPECT_EQ(run_recorded(sim, r, whole, RunControl{}), RunEnd::Finished);
+  }
+  {
+    Simulation sim(build_model(in));
+    Results r = test::fresh_results(in);
+    RunControl rc;
+    rc.stop_at_step = 30;
+    EXPECT_EQ(run_recorded(sim, r, part, rc), RunEnd::Stopped);
+  }
+  {
+    Results saved = read_results_h5(part);
+    ASSERT_TRUE(saved.checkpoint.has_value());
+    Simulation sim(build_model(in));
+    sim.restore(*saved.checkpoint);
+    int glued = 0;
+    for (const Contact& c : sim.contacts()) glued += c.glued;
+    EXPECT_GE(glued, 2) << "the cut's contacts are glued again";
+    Results r = test::fresh_results(in);
+    r.frames = saved.frames;
+    EXPECT_EQ(run_recorded(sim, r, part, RunControl{}), RunEnd::Finished);
+  }
+  const Results a = read_results_h5(whole), b = read_results_h5(part);
+  expect_same(a, b);
+  // Hanging on its glue the tip sags by the springs' compliance only.
+  EXPECT_LT(a.histories[0].back().displacement.norm(), 1e-3);
+  fs::remove_all(dir);
+}
 
 TEST(IoCheckpoint, RestoreRefusesAnotherModel) {
   ModelInput in = sliding_model("cholmod");

@@ -64,6 +64,12 @@ void Simulation::restore(const SimulationState& s) {
   blocks_ = s.blocks;
   moved_since_detection_ = std::numeric_limits<double>::infinity();  // the near list checks the vertices
   contacts_ = s.contacts;
+  // The checkpoint keeps a contact's bond, not its glue: a glued contact is
+  // one across an artificial cut that was bonded when the run started, and
+  // a glued contact's bond never breaks, so bonded on an artificial cut
+  // means glued, exactly. (Without this a resumed run let its cuts open.)
+  for (Contact& c : contacts_)
+    c.glued = c.glued || (c.bonded && on_artificial_cut(model_.blocks[c.vblock], c.vertex, model_.blocks[c.eblock], c.edge));
   contact_index_current_ = false;
   fixed_anchor_ = s.fixed_anchor;
   fixed_pos_ = s.fixed_pos;
