@@ -107,6 +107,39 @@ TEST(Glued3, CubeHangsOnItsGluedSpringsAndFallsOffAJoint) {
   EXPECT_EQ(tally(joint).closed, 0);
 }
 
+// The hanging cube shifted by half a side along x and y under the fixed
+// one: the faces overlap on a 0.5 m square whose corners are a corner of
+// each cube inside the other's face (vertex-face) and two crossings of their
+// edges (edge-edge). All four are on the cut and glued; the cube, its weight
+// off the square's centre, hangs on them tilted, from equilibrium at
+// t = 0 without moving (< 1e-9 m in 0.1 s), the normal forces summing to
+// -W = -25506 N (vertical balance; the moment makes them unequal) within
+// 2e-6 W (measured 1e-6 W: the start-up stops when a static solve moves
+// less than 1e-9 of the model's size).
+TEST(Glued3, EdgeCrossingsOnTheCutAreGluedToo) {
+  Model3 m = hanging_cube(kArtificialSet, kArtificialSet, true);
+  m.blocks[1] = box({0, 0, -1}, {1, 1, 0});
+  m.blocks[1].faces[kTop].set = kArtificialSet;
+  Simulation3 sim(m);
+  sim.start();
+  const Vec3 c0 = sim.blocks()[1].centroid;
+  for (int s = 0; s < 100; ++s) sim.step(1e-3);
+  int edge_pairs = 0;
+  double normal = 0;
+  for (const Contact3& c : sim.contacts()) {
+    edge_pairs += c.glued && c.kind == ContactKind3::EdgeEdge ? 1 : 0;
+    normal += c.normal_force;
+  }
+  const double moved = (sim.blocks()[1].centroid - c0).norm();
+  std::printf("offset cube: %d glued (%d edge-edge), normal forces sum %.4f N (hand %.4f), moved %.2e m\n",
+              sim.glued_contacts(), edge_pairs, normal, -kRho * kG, moved);
+  EXPECT_EQ(sim.glued_contacts(), 4);
+  EXPECT_EQ(tally(sim).locked, 4);
+  EXPECT_EQ(edge_pairs, 2);
+  EXPECT_NEAR(normal, -kRho * kG, 2e-6 * kRho * kG);
+  EXPECT_LT(moved, 1e-9);
+}
+
 // Two parts of different bodies meeting on artificial faces are not one
 // piece of rock (the rule asks for the same Polyhedron::body): not glued.
 TEST(Glued3, PartsOfDifferentBodiesAreNotGlued) {
