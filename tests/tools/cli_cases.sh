@@ -1164,6 +1164,44 @@ PY
   true
 }
 
+# Glued artificial cuts in 3D (docs/solver3d.md, "Glued artificial cuts"):
+# the cutter splits the intact rock around a gallery into walls, floor and
+# roof, one body meeting on artificial faces (tests/data/df3_glued_roof.yaml).
+# The run says how many contacts are glued (16: four corners on each of the
+# walls' cuts against the roof and the floor). The roof, which hangs on its
+# two cuts alone, stays up: it starts from equilibrium and moves less than
+# a nanometre in 0.2 s (as ordinary contacts it fell freely, g t^2 / 2 =
+# 0.196 m), and its drop in the start-up is the springs' and the rock's
+# give under the weights, by hand about 1e-4 m (the walls' bed corners
+# 8.2 MN / 4 / pn = 3.7e-5 m, the walls' elastic shortening rho g 3.5 m /
+# E x 7 m / 2 = 3e-5 m, the roof's shear springs 2.0 MN / 8 / ps = 5e-6 m;
+# measured 7.6e-5 m); a stopped and resumed run repeats the uninterrupted
+# one bit for bit.
+case_df3_glued_roof() {
+  cp "$SRC/tests/data/df3_glued_roof.yaml" . || fail "copy the fixture"
+  "$DDA" run df3_glued_roof.yaml -o out > out.txt 2> err.txt || fail "run: $(cat err.txt)"
+  glued=$(sed -n 's/.* \([0-9][0-9]*\) of them glued across artificial cuts.*/\1/p' out.txt err.txt | head -1)
+  [ "$glued" = 16 ] || fail "expected 16 glued contacts reported, got '$glued': $(cat out.txt err.txt)"
+  "$DDA" history out/results.h5 --csv --point roof > h.csv || fail "history"
+  /usr/bin/python3 - <<'PY' || fail "the glued roof moved more than its springs' stretch"
+import csv
+rows = list(csv.DictReader(open("h.csv")))
+u0, uz = float(rows[0]["roof.uz"]), float(rows[-1]["roof.uz"])
+print("roof uz: %.3e m after the start-up, %.3e m at t = %s s" % (u0, uz, rows[-1]["t"]))
+assert abs(uz - u0) < 1e-9, (u0, uz)
+assert abs(uz) < 2e-4, uz
+PY
+  "$DDA" df df3_glued_roof.yaml --blocks out/blocks3d.h5 -o part.h5 --stop-at-step 100 -q || fail "df --stop-at-step"
+  "$DDA" df --resume part.h5 -q || fail "resume"
+  "$DDA" history out/results.h5 --csv > a.csv && "$DDA" history part.h5 --csv > b.csv || fail "history of both runs"
+  cmp -s a.csv b.csv || fail "the resumed run differs from the uninterrupted one"
+  "$DDA" history out/results.h5 --steps > a.csv && "$DDA" history part.h5 --steps > b.csv || fail "history --steps"
+  cmp -s a.csv b.csv || fail "the resumed run's step log differs"
+  "$DDA" info out/results.h5 | grep "^energy:" > e1.txt && "$DDA" info part.h5 | grep "^energy:" > e2.txt \
+    || fail "no energy line in dda info"
+  cmp -s e1.txt e2.txt || fail "the resumed run's energy differs: $(cat e1.txt e2.txt)"
+}
+
 # Measurement points by block (docs/scenario.md, "points"): a point placed
 # by the block containing a point of the slider, at the slider's centroid,
 # rides with it as the explicit point `slider` at its centre does; each

@@ -283,9 +283,15 @@ void run_session(Sim& sim, Results& results, const OutputOptions& output, const 
   }
   int sliding = 0, locked = 0;
   if (!sim.log().empty()) sliding = sim.log().back().sliding, locked = sim.log().back().locked;
+  // 3D: the locked contacts that are glued across the cutter's artificial
+  // faces (one piece of rock each side), so that nobody reads them as joints.
+  std::string glued;
+  if constexpr (requires { sim.glued_contacts(); })
+    if (const int g = sim.glued_contacts(); g > 0) glued = ", " + std::to_string(g) + " of them glued across artificial cuts";
   report_run_end(end,
                  std::to_string(sim.log().size()) + " steps to t = " + num(sim.time()) + " s (" +
-                     std::to_string(sliding) + " sliding and " + std::to_string(locked) + " locked contacts at the end)",
+                     std::to_string(sliding) + " sliding and " + std::to_string(locked) + " locked contacts at the end" +
+                     glued + ")",
                  stage);
 }
 

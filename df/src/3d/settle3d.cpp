@@ -83,8 +83,9 @@ void Simulation3::settle() {
   // A contact last updated with its contacts stuck holds the unbounded
   // strength of that phase; the first step recomputes it before using it,
   // but a checkpoint or an output written before then shows the joint's.
+  // A glued contact has no joint and keeps none.
   for (Contact3& c : contacts_)
-    if (c.state != ContactState3::Open)
+    if (c.state != ContactState3::Open && !c.glued)
       c.strength = law_of(c).strength(friction_input3(c, model_.control.dt), c.friction);
   // The relaxation's pseudo-steps leave no motion behind: the run starts
   // from the initial velocities.

@@ -103,6 +103,7 @@ Simulation3::Simulation3(Model3 model)
     throw InputError("The 3D earthquake has no mode: give loading, displacement or incident.");
   make_friction_laws();
   springs_ = contact_springs3(model_);
+  springs_.push_back(glue_springs3(springs_.back()));  // at Model3::glue_joint
   index_points();
   start_bolts();
   check_viscous();
@@ -207,6 +208,7 @@ void Simulation3::assemble(double dt) {
     std::vector<double> saturation;
     for (const df::JointProperties& j : model_.joint_sets) saturation.push_back(j.saturation);
     saturation.push_back(model_.default_joint.saturation);
+    saturation.push_back(0.0);  // glue_joint: inside one piece of rock, no joint to fill
     water_loads_ = df::water_loads_3d(*model_.water, saturation, model_.blocks, contacts_, model_.contact_reach);
     for (const df::WaterLoad<3>& l : water_loads_) {
       if (dof_[static_cast<std::size_t>(l.block)] < 0) continue;
@@ -296,10 +298,19 @@ void Simulation3::detect() {
 #pragma omp parallel for schedule(static) if (nc > 20 * df::parallel_grain())
   for (int k = 0; k < nc; ++k) {  // each contact only itself
     Contact3& c = contacts_[static_cast<std::size_t>(k)];
+    if (c.glued) {
+      c.joint = model_.glue_joint();
+      continue;
+    }
     const int set = contact_joint_set(model_.blocks, c);
     c.joint = set >= 0 && set < sets ? set : sets;
   }
+  place_glue();
   place_bonds();
+}
+
+int Simulation3::glued_contacts() const {
+  return static_cast<int>(std::count_if(contacts_.begin(), contacts_.end(), [](const Contact3& c) { return c.glued; }));
 }
 
 bool Simulation3::iterate(double dt, std::vector<Vector12d>& d, int& iterations) {
@@ -505,10 +516,11 @@ void Simulation3::finish_step(const std::vector<Vector12d>& d, double dt) {
       if (stretched.squaredNorm() > 0) c.slip_dir = stretched.normalized();
     }
     // The law's memory over the accepted step (as the 2D solver); the
-    // joint's own law, also while settling with the contacts stuck.
+    // joint's own law, also while settling with the contacts stuck. A glued
+    // contact has none.
     df::FrictionInput in = friction_input3(c, dt);
     in.slip_sign = slip_sign3(c);
-    friction_[static_cast<size_t>(c.joint)]->advance(in, c.friction);
+    if (!c.glued) friction_[static_cast<size_t>(c.joint)]->advance(in, c.friction);
     if (c.state == ContactState3::Sliding) c.friction.slip += c.slip_velocity * dt;
     c.bond_released = 0;  // booked by add_step_work
   }

@@ -1,5 +1,6 @@
 // Bonds of the 3D joints (bonds3d.hpp): where they are placed, the share of
-// the patch each contact carries, and what a break releases.
+// the patch each contact carries, and what a break releases; and the glue of
+// DC's artificial cuts, a bond that never breaks, placed by the same rule.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -64,13 +65,38 @@ void break_bond_in_tension3(Contact3& c, const Model3& m, const ContactSprings3&
   c.bonded = false;
 }
 
+namespace {
+
+// In touch when the run starts: the 2D rule, within a thousandth of the
+// search distance.
+bool in_touch(const Contact3& c, const Model3& m) { return std::abs(c.geo.dn0) <= 1e-3 * m.contact_reach; }
+
+// Bonded and glued faces start closed (as in 2D), so that they hold a block
+// that would fall away from them; the shear spring starts unloaded.
+void close_held(Contact3& c, const ContactSprings3& springs) {
+  if (c.state != ContactState3::Open) return;
+  c.state = ContactState3::Locked;
+  const df::NormalSpring normal = springs.normal_spring(c.geo.dn0);
+  c.normal_force = -normal.k * normal.s0;  // -pn dn0 for the linear penalty
+}
+
+}  // namespace
+
+void Simulation3::place_glue() {
+  if (bonds_placed_) return;
+  for (Contact3& c : contacts_) {
+    if (c.glued || !in_touch(c, model_) || !on_artificial_cut3(model_.blocks, c)) continue;
+    c.glued = true;
+    c.joint = model_.glue_joint();
+    close_held(c, springs_of(c));
+  }
+}
+
 void Simulation3::place_bonds() {
   if (!bonds_used_ || bonds_placed_) return;
-  // In touch: the 2D rule, within a thousandth of the search distance.
-  const double touch = 1e-3 * model_.contact_reach;
   auto bondable = [&](const Contact3& c) {
     const df::JointProperties& j = model_.joint(c.joint);
-    return (j.cohesion > 0 || j.tensile_strength > 0) && std::abs(c.geo.dn0) <= touch;
+    return !c.glued && (j.cohesion > 0 || j.tensile_strength > 0) && in_touch(c, model_);
   };
   const std::vector<double> area =
       bond_areas3(model_.blocks, contacts_, model_.contact_reach, model_.contact_merge, bondable);
@@ -79,13 +105,7 @@ void Simulation3::place_bonds() {
     if (c.bonded || area[k] <= 0) continue;
     c.bonded = true;
     c.bond_area = area[k];
-    // Bonded faces start closed (as in 2D), so that the bond holds a block
-    // that would fall away from its joint; the shear spring starts unloaded.
-    if (c.state == ContactState3::Open) {
-      c.state = ContactState3::Locked;
-      const df::NormalSpring normal = springs_of(c).normal_spring(c.geo.dn0);
-      c.normal_force = -normal.k * normal.s0;  // -pn dn0 for the linear penalty
-    }
+    close_held(c, springs_of(c));
   }
 }
 

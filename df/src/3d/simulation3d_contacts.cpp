@@ -96,6 +96,7 @@ void inherit(Contact3& c, const Contact3& o) {
   c.shear_force = o.shear_force;
   c.bonded = o.bonded;
   c.bond_area = o.bond_area;
+  c.glued = o.glued;
 }
 
 // The candidates of one pair that stand for one point: closer than `merge`
@@ -103,6 +104,7 @@ void inherit(Contact3& c, const Contact3& o) {
 struct PointGroup {
   std::vector<Contact3> candidates;
   std::vector<bool> preferred;  // the candidate search's own choice for its vertex (or an edge pair)
+  std::vector<bool> on_cut;     // the candidate lies on an artificial cut (on_artificial_cut3)
   const Contact3* previous = nullptr;  // the previous contact at this point, if any
 };
 
@@ -119,7 +121,10 @@ double distance_to(const PointGroup& g, const Vec3& x) {
 // plane it has crossed less (the search's separating-axis choice, right for
 // a vertex arriving, wrong for one sliding along an edge of its face). Ties:
 // the same features as before, then the search's choice, then vertex-face.
-// A new group takes the search's choice, vertex-face first.
+// A new group takes the search's choice, vertex-face first. Before all
+// that, a candidate on an artificial cut: where two parts of one body meet
+// corner to corner, a corner lies on the faces beside the cut as well
+// (gap 0 to each), and a contact on a side face would miss the glue.
 const Contact3& representative(const PointGroup& g) {
   auto score = [&](size_t k) {
     const Contact3& c = g.candidates[k];
@@ -130,7 +135,7 @@ const Contact3& representative(const PointGroup& g) {
       align = c.geo.normal.dot(o.geo.normal) * (c.i == o.i ? 1.0 : -1.0);
       same = same_key(c, o) ? 1 : 0;
     }
-    return std::make_tuple(std::round(align * 1e9), same, g.preferred[k] ? 1 : 0,
+    return std::make_tuple(g.on_cut[k] ? 1 : 0, std::round(align * 1e9), same, g.preferred[k] ? 1 : 0,
                            c.kind == ContactKind3::VertexFace ? 1 : 0);
   };
   size_t best = 0;
@@ -141,10 +146,11 @@ const Contact3& representative(const PointGroup& g) {
 
 // One contact per point of the pair (a, b), each with the state of the
 // previous contact at that point (nearest first, each passed on once).
+// `cut_pair`: a and b are parts of one body and one has an artificial face.
 std::vector<Contact3> contacts_of_pair(const std::vector<Polyhedron>& blocks,
                                        const std::vector<std::vector<PolyEdge>>& edges, int a, int b,
                                        ContactOptions3 opt, double merge,
-                                       const std::vector<const Contact3*>& previous_of_pair) {
+                                       const std::vector<const Contact3*>& previous_of_pair, bool cut_pair) {
   opt.alternative_faces = true;
   std::vector<PointGroup> groups;
   for (const auto& cand : find_contacts3(blocks[a], edges[a], blocks[b], edges[b], opt)) {
@@ -158,6 +164,7 @@ std::vector<Contact3> contacts_of_pair(const std::vector<Polyhedron>& blocks,
     if (!home) home = &groups.emplace_back();
     home->candidates.push_back(c);
     home->preferred.push_back(cand.preferred);
+    home->on_cut.push_back(cut_pair && on_artificial_cut3(blocks, c));
   }
   // Closed contacts are matched first: where a group could continue
   // several previous contacts (an open corner in front of a free face
@@ -247,8 +254,13 @@ void detect_contacts3(const std::vector<Polyhedron>& blocks, const std::vector<C
   // whole search, and on a busy machine far more (docs/solver2d.md,
   // "Threads for small models").
   const bool threads = n > df::parallel_grain();
+  std::vector<std::uint8_t> cut(static_cast<std::size_t>(n), 0);  // the block has a face on an artificial cut
 #pragma omp parallel for schedule(static) if (threads)
-  for (int a = 0; a < n; ++a) edges[a] = polyhedron_edges(blocks[a]);
+  for (int a = 0; a < n; ++a) {
+    edges[a] = polyhedron_edges(blocks[a]);
+    cut[a] = std::any_of(blocks[a].faces.begin(), blocks[a].faces.end(),
+                         [](const PolyFace& f) { return f.set == kArtificialSet; });
+  }
   std::vector<std::vector<Contact3>> found(static_cast<std::size_t>(n));
 #pragma omp parallel for schedule(dynamic, 8) if (threads)
   for (int a = 0; a < n; ++a) {
@@ -258,7 +270,8 @@ void detect_contacts3(const std::vector<Polyhedron>& blocks, const std::vector<C
       if (!within(box[a], box[b], reach)) continue;
       const auto it = by_pair.find(key(a, b));
       const auto& old = it == by_pair.end() ? none : it->second;
-      std::vector<Contact3> pair = contacts_of_pair(blocks, edges, a, b, opt, merge, old);
+      const bool cut_pair = (cut[a] || cut[b]) && blocks[a].body == blocks[b].body;
+      std::vector<Contact3> pair = contacts_of_pair(blocks, edges, a, b, opt, merge, old, cut_pair);
       for (Contact3& c : pair) {
         if (c.state == ContactState3::Open) c.normal_force = 0;
         of_a.push_back(std::move(c));
@@ -332,6 +345,12 @@ std::vector<ContactSprings3> contact_springs3(const Model3& m) {
   return out;
 }
 
+ContactSprings3 glue_springs3(const ContactSprings3& default_joint) {
+  ContactSprings3 glue = default_joint;
+  glue.normal = std::make_shared<const df::PenaltyNormal>(glue.pn);
+  return glue;
+}
+
 Eigen::Vector2d shear_offset(const Contact3& c) { return tangents(c.geo).transpose() * (c.geo.point_i - c.ref_j); }
 
 df::FrictionInput friction_input3(const Contact3& c, double dt) {
@@ -373,6 +392,12 @@ ContactState3 update_contact3(Contact3& c, const Model3& m, const ContactSprings
   c.shear_force.setZero();
   c.slip.setZero();
   c.slip_velocity = 0;
+
+  if (c.glued) {  // one piece of rock: never opens, never slides, both springs stay on (placed locked)
+    c.normal_force = n;
+    c.shear_force = -ps * (shear_offset(c) + g.es * di + g.gs * dj);
+    return ContactState3::Locked;
+  }
 
   if (old == ContactState3::Open) {
     if (dn < -eps) {
@@ -429,21 +454,46 @@ ContactState3 update_contact3(Contact3& c, const Model3& m, const ContactSprings
   return ContactState3::Sliding;
 }
 
+namespace {
+
+// The faces of p through vertex u and (unless w < 0) vertex w.
+std::vector<int> faces_at(const Polyhedron& p, int u, int w) {
+  std::vector<int> out;
+  for (int f = 0; f < static_cast<int>(p.faces.size()); ++f) {
+    const auto& v = p.faces[f].vertices;
+    if (std::find(v.begin(), v.end(), u) != v.end() && (w < 0 || std::find(v.begin(), v.end(), w) != v.end()))
+      out.push_back(f);
+  }
+  return out;
+}
+
+}  // namespace
+
+bool on_artificial_cut3(const std::vector<Polyhedron>& blocks, const Contact3& c) {
+  const Polyhedron& i = blocks[c.i];
+  const Polyhedron& j = blocks[c.j];
+  if (i.body != j.body) return false;
+  const double cos_tol = std::cos(10.0 * std::numbers::pi / 180.0);
+  // An artificial face of p among `faces` whose outward normal is `side`
+  // times the contact normal n (which points from j to i): +1 for block j,
+  // -1 for block i.
+  auto artificial_in_plane = [&](const Polyhedron& p, const std::vector<int>& faces, double side) {
+    for (const int f : faces)
+      if (p.faces[f].set == kArtificialSet && side * p.faces[f].normal.dot(c.geo.normal) >= cos_tol) return true;
+    return false;
+  };
+  const bool vf = c.kind == ContactKind3::VertexFace;
+  const std::vector<int> of_j = vf ? std::vector<int>{c.ids[1]} : faces_at(j, c.ids[2], c.ids[3]);
+  const std::vector<int> of_i = vf ? faces_at(i, c.ids[0], -1) : faces_at(i, c.ids[0], c.ids[1]);
+  return artificial_in_plane(j, of_j, 1.0) || artificial_in_plane(i, of_i, -1.0);
+}
+
 // The joint set of the contact's faces: the face of j under a vertex; for
 // an edge pair, a face at j's edge whose plane is the contact's (else one at
 // i's edge), the first with a set >= 0.
 int contact_joint_set(const std::vector<Polyhedron>& blocks, const Contact3& c) {
   const Polyhedron& j = blocks[c.j];
   if (c.kind == ContactKind3::VertexFace) return j.faces[c.ids[1]].set;
-  auto faces_at = [](const Polyhedron& p, int u, int w) {
-    std::vector<int> out;
-    for (int f = 0; f < static_cast<int>(p.faces.size()); ++f) {
-      const auto& v = p.faces[f].vertices;
-      if (std::find(v.begin(), v.end(), u) != v.end() && std::find(v.begin(), v.end(), w) != v.end())
-        out.push_back(f);
-    }
-    return out;
-  };
   int best = -1;
   double best_align = -1;
   const Polyhedron& i = blocks[c.i];

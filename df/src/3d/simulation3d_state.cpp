@@ -33,9 +33,10 @@ void Simulation3::restore(const SimulationState3& s) {
               s.measure_at.size() == measure_at_.size() && s.histories.size() == histories_.size() &&
               s.bolts.size() == bolts_.size() && s.bolt_histories.size() == bolts_.size();
   for (size_t b = 0; fits && b < n; ++b) fits = s.vertices[b].size() == model_.blocks[b].vertices.size();
+  // A contact is glued exactly when its joint is the glue's (detect keeps them so).
   for (const Contact3& c : s.contacts)
     fits = fits && c.i >= 0 && c.j >= 0 && static_cast<size_t>(c.i) < n && static_cast<size_t>(c.j) < n &&
-           c.joint >= 0 && static_cast<size_t>(c.joint) < friction_.size();
+           c.joint >= 0 && static_cast<size_t>(c.joint) < springs_.size() && c.glued == (c.joint == model_.glue_joint());
   if (!fits) throw InputError("The checkpoint does not fit the model (block, vertex, contact, point or bolt counts differ).");
   time_ = s.time;
   dt_ = s.dt;

@@ -90,6 +90,8 @@ void write_checkpoint3(h5::Writer& w, const SimulationState3& s) {
   one("normal_force", [](const Contact3& x) { return x.normal_force; }, "N", "compression positive");
   w.i32(c, "bonded", contact_ints(cs, [](const Contact3& x) { return x.bonded ? 1 : 0; }), "", "1: the joint's bond is intact");
   one("bond_area", [](const Contact3& x) { return x.bond_area; }, "m^2", "share of the face-to-face patch bonded");
+  w.i32(c, "glued", contact_ints(cs, [](const Contact3& x) { return x.glued ? 1 : 0; }), "",
+        "1: across an artificial cut, locked for ever");
   vec2("shear_force", [](const Contact3& x) { return x.shear_force; }, "N", "shear force on i (t1, t2)");
   one("strength", [](const Contact3& x) { return x.strength; }, "N", "the friction law's shear strength");
   one("slip_velocity", [](const Contact3& x) { return x.slip_velocity; }, "m/s", "slip speed of the last iterate");
@@ -160,6 +162,8 @@ SimulationState3 read_checkpoint3(const h5::Reader& r, const std::vector<std::si
   const bool has_bonds = r.exists(c + "bonded");
   const auto bonded = has_bonds ? ivec("bonded", 1) : std::vector<std::int64_t>(nc, 0);
   const auto bond_area = has_bonds ? checkpoint_table(r, c + "bond_area", nc, 1) : std::vector<double>(nc, 0.0);
+  // Glue: none in files written before it (nothing was glued then).
+  const auto glued = r.exists(c + "glued") ? ivec("glued", 1) : std::vector<std::int64_t>(nc, 0);
   for (std::size_t k = 0; k < nc; ++k) {
     Contact3 x;
     x.i = static_cast<int>(ci[k]);
@@ -177,6 +181,7 @@ SimulationState3 read_checkpoint3(const h5::Reader& r, const std::vector<std::si
     x.normal_force = normal_force[k];
     x.bonded = bonded[k] != 0;
     x.bond_area = bond_area[k];
+    x.glued = glued[k] != 0;
     x.shear_force = row2(shear, k);
     x.strength = strength[k];
     x.slip_velocity = slip_velocity[k];

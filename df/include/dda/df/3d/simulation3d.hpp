@@ -132,11 +132,15 @@ struct Model3 {
   int max_iterations = 10;         // open-close iterations per step (then advance() cuts dt)
   Control3 control;
 
-  // The joint of a contact's `joint` index: joint set, or the default.
+  // The joint of a contact's `joint` index: joint set, or the default
+  // (also for glue_joint(), which has no joint of its own).
   const df::JointProperties& joint(int index) const {
     return static_cast<std::size_t>(index) < joint_sets.size() ? joint_sets[static_cast<std::size_t>(index)]
                                                                : default_joint;
   }
+  // The `joint` index of glued contacts (Contact3::glued), after the
+  // default's: their springs are the default joint's penalties, linear.
+  int glue_joint() const { return static_cast<int>(joint_sets.size()) + 1; }
   const Material3& material_of(std::size_t b) const {
     return materials[block_material.empty() ? 0 : static_cast<std::size_t>(block_material[b])];
   }
@@ -162,6 +166,10 @@ struct ContactSprings3 {
 // One per joint index (Model3::joint: the sets, then the default).
 // InputError for a penalty that is not a positive number, or a bad law.
 std::vector<ContactSprings3> contact_springs3(const Model3& m);
+// The springs of glued contacts (Model3::glue_joint): the default joint's
+// pn and ps, with the linear penalty whatever normal law it has (the 2D
+// glue's springs too).
+ContactSprings3 glue_springs3(const ContactSprings3& default_joint);
 
 // One tracked contact: block i's vertex / edge against block j's face / edge.
 struct Contact3 {
@@ -176,7 +184,8 @@ struct Contact3 {
   Eigen::Vector2d slip{0, 0};      // closed: slip of i relative to j in the last iterate (m)
   double normal_force = 0;         // N, compression positive (last iterate)
   Eigen::Vector2d shear_force{0, 0};  // N on i, (t1, t2), last iterate
-  int joint = 0;                   // index into the laws: joint set, or joint_sets.size() for the default
+  int joint = 0;                   // index into the laws: joint set, joint_sets.size() for the default,
+                                   // Model3::glue_joint() while glued
   double strength = 0;             // N, the law's shear strength at the last iterate's N and slip speed
   double slip_velocity = 0;        // m/s, |slip| / dt in the last iterate (closed contacts)
   Vec3 slip_axis{0, 0, 0};         // world direction of the first slip: the sign of later slip along it
@@ -187,6 +196,10 @@ struct Contact3 {
   bool bonded = false;
   double bond_area = 0;            // m^2, this contact's share of its face-to-face patch
   double bond_released = 0;        // J, spring energy the bond let go in this step (the ledger's breakage)
+  // Across one of DC's artificial cuts (on_artificial_cut3), in touch when
+  // the run starts: one piece of rock, not a joint. Locked for ever, both
+  // springs on whatever their forces; no friction, normal law or water.
+  bool glued = false;
 };
 
 // One accepted step.
@@ -246,6 +259,16 @@ int slip_sign3(const Contact3& c);
 // The joint set (PolyFace::set) of the faces in contact; negative if none.
 int contact_joint_set(const std::vector<Polyhedron>& blocks, const Contact3& c);
 
+// The contact lies on one of DC's artificial cuts (kArtificialSet): its two
+// blocks are parts of one rock body (the same Polyhedron::body), and a face
+// of either block at the contact's feature (the face under a vertex, or a
+// face of the vertex's block through it; a face at either edge of an edge
+// pair) is artificial and lies in the contact plane, facing the other block
+// within 10 degrees. DC's excavations tag only one side of such a cut: the
+// piece kept first has an excavation face there (it partly faces the
+// opening), the next piece an artificial face; so one side suffices.
+bool on_artificial_cut3(const std::vector<Polyhedron>& blocks, const Contact3& c);
+
 // Tangential stretch of the shear spring at the start of the step (t1, t2).
 Eigen::Vector2d shear_offset(const Contact3& c);
 
@@ -268,7 +291,7 @@ struct SimulationState3 {
   bool started = false;                           // initial equilibrium done (or not asked for)
   std::vector<BoltState3> bolts;                  // per bolt of the model
   std::vector<std::vector<df::BoltSample>> bolt_histories;
-  bool bonds_placed = false;                      // the joints' bonds are placed (simulation3d_bonds.cpp)
+  bool bonds_placed = false;                      // the joints' bonds and the glue are placed (simulation3d_bonds.cpp)
 };
 
 class ContactCoupling3;  // df/src/3d/contact_coupling3d.hpp
@@ -308,6 +331,8 @@ class Simulation3 {
   // starts from (after the start-up relaxation), then one per accepted step.
   const std::vector<df::EnergyRecord>& energy_log() const { return energy_log_; }
   const std::vector<Contact3>& contacts() const { return contacts_; }
+  // Contacts glued across artificial cuts now (Contact3::glued).
+  int glued_contacts() const;
   const Model3& model() const { return model_; }
   // Per measurement point (model order): sample 0 at the start, then one per step.
   const std::vector<std::vector<MeasurementSample3>>& histories() const { return histories_; }
@@ -409,6 +434,9 @@ class Simulation3 {
   // detection bonds the contacts of bonded joints in touch, each with its
   // share of the patch, and closes them.
   void place_bonds();
+  // Glue (simulation3d_bonds.cpp): until the first accepted solve, every
+  // detection glues the contacts on artificial cuts in touch, closed.
+  void place_glue();
   // The energy ledger (its 3D kernel in simulation3d_energy.cpp, the
   // bookkeeping energy_ledger.hpp's, shared with 2D): started afresh from
   // the current state; a step's work and losses, taken from the
@@ -420,9 +448,10 @@ class Simulation3 {
   void add_step_work(const std::vector<Vector12d>& d, double dt);
   void close_energy_record();
   // The law the open-close iteration uses: the joint's, or while the model
-  // settles with its contacts stuck, one that never lets go.
+  // settles with its contacts stuck, one that never lets go (as for a glued
+  // contact, which has no joint and never asks it).
   const df::FrictionLaw& law_of(const Contact3& c) const {
-    return settling_stuck_ ? *df::stuck_friction() : *friction_[static_cast<size_t>(c.joint)];
+    return settling_stuck_ || c.glued ? *df::stuck_friction() : *friction_[static_cast<size_t>(c.joint)];
   }
   // The contact's springs: its joint's penalties and normal law.
   const ContactSprings3& springs_of(const Contact3& c) const { return springs_[static_cast<size_t>(c.joint)]; }
@@ -451,7 +480,7 @@ class Simulation3 {
   double dt_ = 0;   // current step of advance()
   double w0_ = 1;   // m, the reference length of the displacement limit
   std::vector<std::unique_ptr<df::FrictionLaw>> friction_;
-  std::vector<ContactSprings3> springs_;  // per joint index, as friction_
+  std::vector<ContactSprings3> springs_;  // per joint index, as friction_, then the glue's (Model3::glue_joint)
   std::vector<std::vector<int>> fixed_of_block_, loads_of_block_;  // point indices per block
   std::vector<Vec3> fixed_at_, load_at_, measure_at_;              // where the material points are now
   std::vector<std::vector<MeasurementSample3>> histories_;
@@ -474,7 +503,7 @@ class Simulation3 {
   df::StepTimings timings_;
   bool started_ = false;         // settle() has run (or was not asked for)
   bool bonds_used_ = false;      // some joint has cohesion or tensile strength
-  bool bonds_placed_ = false;    // a solve was accepted: no new bonds from here on
+  bool bonds_placed_ = false;    // a solve was accepted: no new bonds or glue from here on
   bool settling_ = false;        // before t = 0, relaxing statically: time stands still
   bool settling_stuck_ = false;  // and every closed contact sticks (its first phase)
   StartUp start_up_;
