@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "dda/df/core/block_system.hpp"
+#include "dda/df/core/bond.hpp"
 
 namespace dda::df {
 
@@ -214,7 +215,7 @@ ContactState update_contact(Contact& c, const ContactLaw& law, double dt, const 
   }
 
   // A closed contact within the band keeps its spring (a pull of at most pn eps).
-  const double tension_cap = (c.bonded ? law.tensile_strength * c.length : 0.0) + law.pn * eps;
+  const double tension_cap = bond_tension_capacity(law.tensile_strength, c.length, c.bonded) + law.pn * eps;
   if (n < -tension_cap && !hold) {
     c.broke = c.bonded;
     c.bonded = false;

@@ -14,6 +14,7 @@
 #include "core/open_close.hpp"
 #include "core/step_control.hpp"
 #include "dda/df/2d/contact_detection.hpp"
+#include "dda/df/core/bond.hpp"
 
 namespace dda::df {
 
@@ -210,9 +211,9 @@ void Simulation::carry_over(const std::vector<ContactCandidate>& candidates, con
       } else if (step_count_ == 0) {
         // Bonds exist only between faces in touch at the start.
         const JointProperties& j = model_.joints[c.joint];
-        c.glued = on_artificial_cut(model_.blocks[c.vblock], c.vertex, model_.blocks[c.eblock], c.edge) &&
-                  std::abs(cand.dn) <= 1e-3 * d0;
-        c.bonded = c.glued || ((j.cohesion > 0 || j.tensile_strength > 0) && std::abs(cand.dn) <= 1e-3 * d0);
+        const bool touch = in_touch_at_start(cand.dn, d0);
+        c.glued = touch && on_artificial_cut(model_.blocks[c.vblock], c.vertex, model_.blocks[c.eblock], c.edge);
+        c.bonded = c.glued || (touch && forms_bonds(j));
         // Faces in touch at the start are in contact: they start closed and
         // open in the iteration if they pull apart. Starting them open made a
         // stack of beds close one contact layer per open-close iteration (the

@@ -1,7 +1,8 @@
 #pragma once
-// Bonds of the 3D joints (private to DF; docs/solver3d.md, "Bonds"). A joint
-// set with cohesion c or tensile strength T (Pa) bonds the contacts of its
-// faces that touch when the run starts. Each contact stands for a share of
+// Bonds of the 3D joints (private to DF; docs/solver3d.md, "Bonds"; the
+// rules both dimensions share are core/bond.hpp's). A joint set with
+// cohesion c or tensile strength T (Pa) bonds the contacts of its faces that
+// touch when the run starts. Each contact stands for a share of
 // the patch where the two faces lie on each other (facing_patches3d.hpp):
 // the patch's area split evenly among the pair's contacts on it, which is
 // its tributary area when they are its corners (a face on a face has a
@@ -13,6 +14,7 @@
 #include <vector>
 
 #include "dda/df/3d/simulation3d.hpp"
+#include "dda/df/core/bond.hpp"
 
 namespace dda::df3 {
 

@@ -2,6 +2,8 @@
 // iteration, and the end-of-step update (simulation3d.hpp).
 #include "dda/df/3d/simulation3d.hpp"
 
+#include "dda/df/core/bond.hpp"
+
 #include "3d/contact_coupling3d.hpp"
 #include "core/open_close.hpp"
 #include "3d/simulation3d_assembly.hpp"
@@ -127,7 +129,7 @@ Simulation3& Simulation3::operator=(Simulation3&&) noexcept = default;
 
 void Simulation3::make_friction_laws() {
   auto add = [&](const df::JointProperties& joint) {
-    bonds_used_ = bonds_used_ || joint.cohesion > 0 || joint.tensile_strength > 0;
+    bonds_used_ = bonds_used_ || df::forms_bonds(joint);
     friction_.push_back(df::make_friction_law(joint));
   };
   for (const df::JointProperties& joint : model_.joint_sets) add(joint);

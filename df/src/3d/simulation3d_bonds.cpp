@@ -55,7 +55,7 @@ std::vector<double> bond_areas3(const std::vector<Polyhedron>& blocks, const std
 }
 
 double bond_tension3(const Contact3& c, const Model3& m) {
-  return c.bonded ? m.joint(c.joint).tensile_strength * c.bond_area : 0.0;
+  return df::bond_tension_capacity(m.joint(c.joint).tensile_strength, c.bond_area, c.bonded);
 }
 
 void break_bond_in_tension3(Contact3& c, const Model3& m, const ContactSprings3& springs,
@@ -67,9 +67,8 @@ void break_bond_in_tension3(Contact3& c, const Model3& m, const ContactSprings3&
 
 namespace {
 
-// In touch when the run starts: the 2D rule, within a thousandth of the
-// search distance.
-bool in_touch(const Contact3& c, const Model3& m) { return std::abs(c.geo.dn0) <= 1e-3 * m.contact_reach; }
+// In touch when the run starts (core/bond.hpp).
+bool in_touch(const Contact3& c, const Model3& m) { return df::in_touch_at_start(c.geo.dn0, m.contact_reach); }
 
 // Bonded and glued faces start closed (as in 2D), so that they hold a block
 // that would fall away from them; the shear spring starts unloaded.
@@ -96,7 +95,7 @@ void Simulation3::place_bonds() {
   if (!bonds_used_ || bonds_placed_) return;
   auto bondable = [&](const Contact3& c) {
     const df::JointProperties& j = model_.joint(c.joint);
-    return !c.glued && (j.cohesion > 0 || j.tensile_strength > 0) && in_touch(c, model_);
+    return !c.glued && df::forms_bonds(j) && in_touch(c, model_);
   };
   const std::vector<double> area =
       bond_areas3(model_.blocks, contacts_, model_.contact_reach, model_.contact_merge, bondable);
