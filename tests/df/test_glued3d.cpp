@@ -19,7 +19,6 @@
 namespace dda::df3 {
 namespace {
 
-namespace fs = std::filesystem;
 using testing::box;
 
 constexpr double kDeg = std::numbers::pi / 180;
@@ -298,28 +297,11 @@ TEST(Glued3, ResumedRunStaysGluedBitForBit) {
   PolyhedronModel blocks;
   blocks.blocks = model.blocks;
   for (Polyhedron& b : blocks.blocks) refresh_geometry(b), b.body = -1;
-  const fs::path dir = fs::temp_directory_path();
-  const std::string whole = (dir / "dda_glued3d_whole.h5").string(), part = (dir / "dda_glued3d_part.h5").string();
-  Simulation3 a(model);
-  Results3 ra = testing::fresh_results3(blocks);
-  ASSERT_EQ(run_recorded(a, ra, whole, RunControl3{}), df::RunEnd::Finished);
-  {
-    Simulation3 s(model);
-    Results3 r = testing::fresh_results3(blocks);
-    RunControl3 rc;
-    rc.stop_at_step = 50;
-    ASSERT_EQ(run_recorded(s, r, part, rc), df::RunEnd::Stopped);
-  }
-  Results3 saved = read_results3_h5(part);
-  ASSERT_TRUE(saved.checkpoint.has_value());
+  const testing::WholeAndResumed3 runs = testing::run_whole_and_resumed3(model, blocks, 50, "glued3d");
   int glued = 0;
-  for (const Contact3& c : saved.checkpoint->contacts) glued += c.glued ? 1 : 0;
+  for (const Contact3& c : runs.saved.checkpoint->contacts) glued += c.glued ? 1 : 0;
   EXPECT_EQ(glued, 4);
-  Simulation3 b(model);
-  b.restore(*saved.checkpoint);
-  Results3 rb = testing::fresh_results3(blocks);
-  rb.frames = saved.frames;
-  ASSERT_EQ(run_recorded(b, rb, part, RunControl3{}), df::RunEnd::Finished);
+  const Simulation3 &a = *runs.whole, &b = *runs.resumed;
   EXPECT_EQ(a.glued_contacts(), 4);
   for (std::size_t i = 0; i < a.blocks().size(); ++i) EXPECT_EQ(a.blocks()[i].vertices, b.blocks()[i].vertices);
   ASSERT_EQ(a.contacts().size(), b.contacts().size());
@@ -328,8 +310,6 @@ TEST(Glued3, ResumedRunStaysGluedBitForBit) {
     EXPECT_EQ(a.contacts()[k].normal_force, b.contacts()[k].normal_force);
   }
   EXPECT_EQ(a.energy_log().back().residual, b.energy_log().back().residual);
-  fs::remove(whole);
-  fs::remove(part);
 }
 
 }  // namespace

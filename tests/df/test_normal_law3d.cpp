@@ -29,7 +29,6 @@
 namespace dda::df3 {
 namespace {
 
-namespace fs = std::filesystem;
 
 constexpr double kRho = 2000, kG = 9.81;
 constexpr double kWeight3 = kRho * kG * 1.0;  // 19620 N, the prism's 1 m^3
@@ -290,30 +289,10 @@ TEST(NormalLaw3, ResumedRunIsBitIdentical) {
   model.control.initial_equilibrium = false;
   model.control.steps = 60;
   model.measurements.push_back({"prism", 1, Vec3(0.5, 1, 0.252)});
-  const std::string whole = (fs::temp_directory_path() / "dda_normal_law3_whole.h5").string();
-  const std::string part = (fs::temp_directory_path() / "dda_normal_law3_part.h5").string();
-  Simulation3 a(model);
-  {
-    Results3 r = testing::fresh_results3(blocks);
-    ASSERT_EQ(run_recorded(a, r, whole, RunControl3{}), df::RunEnd::Finished);
-  }
-  {
-    Simulation3 half(model);
-    Results3 r = testing::fresh_results3(blocks);
-    RunControl3 rc;
-    rc.stop_at_step = 30;  // after the landing (about step 20)
-    ASSERT_EQ(run_recorded(half, r, part, rc), df::RunEnd::Stopped);
-    ASSERT_GT(closed_contacts(half), 0);
-  }
-  Simulation3 b(model);
-  {
-    Results3 saved = read_results3_h5(part);
-    ASSERT_TRUE(saved.checkpoint.has_value());
-    b.restore(*saved.checkpoint);
-    Results3 r = testing::fresh_results3(blocks);
-    r.frames = saved.frames;
-    ASSERT_EQ(run_recorded(b, r, part, RunControl3{}), df::RunEnd::Finished);
-  }
+  // Stopped at step 30, after the landing (about step 20).
+  const testing::WholeAndResumed3 runs = testing::run_whole_and_resumed3(model, blocks, 30, "normal_law3");
+  ASSERT_GT(closed_contacts(*runs.stopped), 0);
+  const Simulation3 &a = *runs.whole, &b = *runs.resumed;
   ASSERT_EQ(b.log().size(), a.log().size());
   for (std::size_t i = 0; i < a.blocks().size(); ++i) {
     EXPECT_EQ(a.blocks()[i].vertices, b.blocks()[i].vertices) << "block " << i;
@@ -325,8 +304,6 @@ TEST(NormalLaw3, ResumedRunIsBitIdentical) {
     EXPECT_EQ(a.contacts()[k].state, b.contacts()[k].state) << "contact " << k;
   }
   EXPECT_EQ(a.energy_log().back().residual, b.energy_log().back().residual);
-  fs::remove(whole);
-  fs::remove(part);
 }
 
 // The scenario: the 2D keys, read by the same code, are taken in 3D; a bad

@@ -18,7 +18,6 @@
 namespace dda::df3 {
 namespace {
 
-namespace fs = std::filesystem;
 using testing::box;
 
 constexpr double kDeg = std::numbers::pi / 180;
@@ -244,37 +243,17 @@ PolyhedronModel hanging_blocks() {
   return p;
 }
 
-fs::path temp(const std::string& name) { return fs::temp_directory_path() / ("dda_bonds3d_" + name); }
-
 // Stopped before the bond breaks (step 100 of 160), written, read and resumed:
 // the run breaks the bond as the uninterrupted one does and ends bit for
 // bit where it ends, bonds, ledger and all.
 TEST(Bonds3, ResumedRunBreaksAsTheUninterruptedOne) {
   const PolyhedronModel blocks = hanging_blocks();
   const Model3 model = pulled_cube();
-  const std::string whole = temp("whole.h5").string(), part = temp("part.h5").string();
-  Simulation3 a(model);
-  Results3 ra = testing::fresh_results3(blocks);
-  ASSERT_EQ(run_recorded(a, ra, whole, RunControl3{}), df::RunEnd::Finished);
-
-  {
-    Simulation3 s(model);
-    Results3 r = testing::fresh_results3(blocks);
-    RunControl3 rc;
-    rc.stop_at_step = 100;
-    ASSERT_EQ(run_recorded(s, r, part, rc), df::RunEnd::Stopped);
-    int bonded = 0;
-    for (const Contact3& c : s.contacts()) bonded += c.bonded ? 1 : 0;
-    ASSERT_EQ(bonded, 4);  // still intact at the checkpoint
-  }
-  Results3 saved = read_results3_h5(part);
-  ASSERT_TRUE(saved.checkpoint.has_value());
-  Simulation3 b(model);
-  b.restore(*saved.checkpoint);
-  Results3 rb = testing::fresh_results3(blocks);
-  rb.frames = saved.frames;
-  ASSERT_EQ(run_recorded(b, rb, part, RunControl3{}), df::RunEnd::Finished);
-
+  const testing::WholeAndResumed3 runs = testing::run_whole_and_resumed3(model, blocks, 100, "bonds3d");
+  int bonded = 0;
+  for (const Contact3& c : runs.stopped->contacts()) bonded += c.bonded ? 1 : 0;
+  ASSERT_EQ(bonded, 4);  // still intact at the checkpoint
+  const Simulation3 &a = *runs.whole, &b = *runs.resumed;
   for (std::size_t i = 0; i < a.blocks().size(); ++i) EXPECT_EQ(a.blocks()[i].vertices, b.blocks()[i].vertices);
   ASSERT_EQ(a.contacts().size(), b.contacts().size());
   for (std::size_t k = 0; k < a.contacts().size(); ++k) {
@@ -284,8 +263,6 @@ TEST(Bonds3, ResumedRunBreaksAsTheUninterruptedOne) {
   EXPECT_GT(a.energy_log().back().breakage, 0);  // it did break, after the checkpoint
   EXPECT_EQ(a.energy_log().back().breakage, b.energy_log().back().breakage);
   EXPECT_EQ(a.energy_log().back().residual, b.energy_log().back().residual);
-  fs::remove(whole);
-  fs::remove(part);
 }
 
 }  // namespace
