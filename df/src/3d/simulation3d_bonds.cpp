@@ -67,9 +67,6 @@ void break_bond_in_tension3(Contact3& c, const Model3& m, const ContactSprings3&
 
 namespace {
 
-// In touch when the run starts (core/bond.hpp).
-bool in_touch(const Contact3& c, const Model3& m) { return df::in_touch_at_start(c.geo.dn0, m.contact_reach); }
-
 // Bonded and glued faces start closed (as in 2D), so that they hold a block
 // that would fall away from them; the shear spring starts unloaded.
 void close_held(Contact3& c, const ContactSprings3& springs) {
@@ -84,7 +81,8 @@ void close_held(Contact3& c, const ContactSprings3& springs) {
 void Simulation3::place_glue() {
   if (bonds_placed_) return;
   for (Contact3& c : contacts_) {
-    if (c.glued || !in_touch(c, model_) || !on_artificial_cut3(model_.blocks, c)) continue;
+    if (c.glued || !df::in_touch_at_start(c.geo.dn0, model_.contact_reach)) continue;
+    if (!on_artificial_cut3(model_.blocks, c)) continue;
     c.glued = true;
     c.joint = model_.glue_joint();
     close_held(c, springs_of(c));
@@ -95,7 +93,7 @@ void Simulation3::place_bonds() {
   if (!bonds_used_ || bonds_placed_) return;
   auto bondable = [&](const Contact3& c) {
     const df::JointProperties& j = model_.joint(c.joint);
-    return !c.glued && df::forms_bonds(j) && in_touch(c, model_);
+    return !c.glued && df::forms_bonds(j) && df::in_touch_at_start(c.geo.dn0, model_.contact_reach);
   };
   const std::vector<double> area =
       bond_areas3(model_.blocks, contacts_, model_.contact_reach, model_.contact_merge, bondable);
